@@ -1,0 +1,29 @@
+/* diag.h - the one place diagnostics are printed, and the exit status. */
+#ifndef DIAG_H
+#define DIAG_H
+
+/* Exit statuses; the program's status only ever rises. */
+enum status {
+	ST_OK = 0,
+	ST_SCENE = 1,	/* an error in the scene file or a template */
+	ST_USAGE = 2,	/* a command-line usage error */
+	ST_SYSTEM = 3	/* I/O, memory */
+};
+
+/*
+ * Print "phyllo-export: FILE:LINE[:COL]: message" (LINE 0 leaves out the
+ * position, COL 0 the column) and raise the exit status to st.  ST_OK
+ * prints a warning and leaves the status alone.
+ */
+void	 diag(enum status st, const char *file, int line, int col,
+	    const char *fmt, ...)
+#if defined(__GNUC__)
+	    __attribute__((format(printf, 5, 6)))
+#endif
+	    ;
+enum status diag_status(void);
+
+/* How to call ourselves in messages: "phyllo-export". */
+extern const char *diag_progname;
+
+#endif

@@ -1,0 +1,19 @@
+/* model.h - the models: each checks its settings and fills a result. */
+#ifndef MODEL_H
+#define MODEL_H
+
+#include "organ.h"
+#include "scene.h"
+
+/* 0 on success; -1 after a diagnostic, leaving res empty. */
+typedef int model_fn(const struct scene *, struct result *res);
+
+model_fn planar_run;
+
+/* The contact parastichy numbers seen from organ k, sorted; 0 if none. */
+void	parastichies(const struct result *, size_t k, int pair[2]);
+
+/* n * deg reduced to [0, 360), without the rounding of the product. */
+double	angle_mod360(double n, double deg);
+
+#endif

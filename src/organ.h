@@ -1,0 +1,47 @@
+/* organ.h - the seam between models and writers: an array of placed organs. */
+#ifndef ORGAN_H
+#define ORGAN_H
+
+#include <stddef.h>
+
+/*
+ * One placed organ in the world frame (right-handed, Z up).  The frame
+ * is orthonormal: w is the outward surface normal, u the tangent of the
+ * generating curve pointing away from the tip (radially outward on a
+ * disk), v = w x u.  An organ model built with its outward direction
+ * along local +X and its up along local +Z lands here by the matrix
+ * [u v w] * scale + pos.
+ */
+struct organ {
+	double		 pos[3];
+	double		 u[3], v[3], w[3];
+	double		 scale;		/* applied to the organ model */
+	double		 radius;	/* packing/primordium radius */
+	double		 phi;		/* angle about the axis, degrees */
+	double		 height;	/* along the axis, before offsets */
+	unsigned	 object;	/* index into result.objects */
+};
+
+/* A model's own facts for --info: "key: v1 v2 ...". */
+struct info_item {
+	const char	*key;
+	double		 val[6];
+	int		 nval;
+};
+
+#define INFO_MAX 16
+
+struct result {
+	struct organ	*organs;	/* owned */
+	size_t		 count;
+	const char	*const *objects; /* borrowed from the scene */
+	size_t		 nobjects;
+	struct info_item info[INFO_MAX];
+	int		 ninfo;
+};
+
+void	result_init(struct result *, size_t count);
+void	result_free(struct result *);
+void	result_info(struct result *, const char *key, int nval, ...);
+
+#endif

@@ -1,0 +1,47 @@
+/* out_info.c - "key: value" lines about the result, for people and scripts. */
+#include <math.h>
+
+#include "writer.h"
+
+static void
+line(struct sink *s, const char *key, int n, const double *v)
+{
+	sink_puts(s, key);
+	sink_putc(s, ':');
+	for (int i = 0; i < n; i++) {
+		sink_putc(s, ' ');
+		sink_num(s, v[i]);
+	}
+	sink_putc(s, '\n');
+}
+
+void
+info_write(struct sink *s, const struct scene *sc, const struct result *r)
+{
+	double box[6] = { HUGE_VAL, HUGE_VAL, HUGE_VAL,
+	    -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+	double count = (double)r->count;
+
+	sink_puts(s, "model: ");
+	sink_puts(s, scene_model_name(sc->model));
+	sink_puts(s, "\nname: ");
+	sink_puts(s, sc->name);
+	sink_putc(s, '\n');
+	line(s, "count", 1, &count);
+	line(s, "divergence", 1, &sc->divergence);
+	for (size_t i = 0; i < r->count; i++)
+		for (int j = 0; j < 3; j++) {
+			box[j] = fmin(box[j], r->organs[i].pos[j]);
+			box[j + 3] = fmax(box[j + 3], r->organs[i].pos[j]);
+		}
+	if (r->count > 0)
+		line(s, "bbox", 6, box);
+	sink_puts(s, "objects:");
+	for (size_t i = 0; i < r->nobjects; i++) {
+		sink_putc(s, ' ');
+		sink_puts(s, r->objects[i]);
+	}
+	sink_putc(s, '\n');
+	for (int i = 0; i < r->ninfo; i++)
+		line(s, r->info[i].key, r->info[i].nval, r->info[i].val);
+}

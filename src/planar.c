@@ -1,0 +1,108 @@
+/*
+ * planar.c - Vogel's model (ABOP ch. 4): organ n at angle n*alpha and
+ * radius inner + c*n^e on a disk facing +Z, optionally lifted onto a
+ * paraboloid dome.  The packing radius is that of a hexagonal packing
+ * with the same area per organ, which is pi*c^2 for Vogel's formula.
+ */
+#include <math.h>
+
+#include "model.h"
+
+/* Radius at index n, and its derivative with respect to n. */
+static double
+ring(const struct planar_params *p, double c, double n)
+{
+	return p->inner + c * pow(n, p->exponent);
+}
+
+static double
+ring_slope(const struct planar_params *p, double c, double n)
+{
+	return c * p->exponent * pow(n, p->exponent - 1);
+}
+
+static int
+planar_check(const struct scene *sc)
+{
+	const struct planar_params *p = &sc->planar;
+
+	if (!scene_given(sc, "count")) {
+		scene_error(sc, "count", "missing setting 'count'");
+		return -1;
+	}
+	if (scene_given(sc, "planar.outer") && scene_given(sc, "planar.scale")) {
+		scene_error(sc, "planar.outer", "give planar.scale or "
+		    "planar.outer, not both");
+		return -1;
+	}
+	if (scene_given(sc, "planar.outer") && p->outer <= p->inner) {
+		scene_error(sc, "planar.outer", "planar.outer %.9g must be "
+		    "greater than planar.inner %.9g", p->outer, p->inner);
+		return -1;
+	}
+	return 0;
+}
+
+int
+planar_run(const struct scene *sc, struct result *res)
+{
+	const struct planar_params *p = &sc->planar;
+	size_t count = (size_t)sc->count;
+	double c = p->scale, rim, kdome;
+
+	if (planar_check(sc) < 0)
+		return -1;
+	if (scene_given(sc, "planar.outer"))
+		c = count > 1 ? (p->outer - p->inner) /
+		    pow((double)(count - 1), p->exponent) :
+		    p->outer - p->inner;
+	rim = ring(p, c, (double)(count - 1));
+	/* z = dome * (1 - (rho/rim)^2), so dz/drho = -kdome * rho. */
+	kdome = rim > 0 ? 2 * p->dome / (rim * rim) : 0;
+
+	result_init(res, count);
+	res->objects = sc->objects;
+	res->nobjects = sc->nobjects;
+	for (size_t n = 0; n < count; n++) {
+		struct organ *o = &res->organs[n];
+		double phi = angle_mod360((double)n, sc->divergence);
+		double rho = ring(p, c, (double)n);
+		double m = n > 1 ? (double)n : 1;
+		double cs = cos(phi * (M_PI / 180)), sn = sin(phi * (M_PI / 180));
+		double slope = -kdome * rho, k = 1 / sqrt(1 + slope * slope);
+		double z = rim > 0 ? p->dome * (1 - (rho / rim) * (rho / rim)) :
+		    p->dome;
+
+		o->phi = phi;
+		o->height = z;
+		o->pos[0] = rho * cs;
+		o->pos[1] = rho * sn;
+		o->pos[2] = z;
+		/* u outward along the surface, w its normal, v = w x u. */
+		o->u[0] = cs * k;
+		o->u[1] = sn * k;
+		o->u[2] = slope * k;
+		o->w[0] = -slope * cs * k;
+		o->w[1] = -slope * sn * k;
+		o->w[2] = k;
+		o->v[0] = -sn;
+		o->v[1] = cs;
+		o->v[2] = 0;
+		/* Area per organ d(pi rho^2)/dn shared as hexagons. */
+		o->radius = sqrt(M_PI * ring(p, c, m) * ring_slope(p, c, m) /
+		    sqrt(3.0));
+		o->scale = o->radius;
+		o->object = 0;
+	}
+	result_info(res, "scale", 1, c);
+	result_info(res, "outer", 1, rim);
+	if (count >= 3) {
+		int pair[2];
+
+		parastichies(res, count - 1, pair);
+		if (pair[0] > 0)
+			result_info(res, "parastichies", 2, (double)pair[0],
+			    (double)pair[1]);
+	}
+	return 0;
+}

@@ -1,0 +1,40 @@
+/* result.c - the organ array every model fills and every writer reads. */
+#include <stdarg.h>
+#include <stdlib.h>
+
+#include "mem.h"
+#include "organ.h"
+
+void
+result_init(struct result *r, size_t count)
+{
+	*r = (struct result){0};
+	r->organs = xcalloc(count, sizeof(*r->organs));
+	r->count = count;
+}
+
+void
+result_free(struct result *r)
+{
+	free(r->organs);
+	r->organs = NULL;
+	r->count = 0;
+}
+
+/* Record a fact for --info; facts past INFO_MAX are a programming error. */
+void
+result_info(struct result *r, const char *key, int nval, ...)
+{
+	struct info_item *it;
+	va_list ap;
+
+	if (r->ninfo >= INFO_MAX || nval > 6)
+		abort();
+	it = &r->info[r->ninfo++];
+	it->key = key;
+	it->nval = nval;
+	va_start(ap, nval);
+	for (int i = 0; i < nval; i++)
+		it->val[i] = va_arg(ap, double);
+	va_end(ap);
+}

@@ -1,0 +1,606 @@
+/*
+ * scene.c - load a scene file with libconfig and check it against one
+ * table of settings.  The table is the single source for parsing,
+ * defaults, range checks and the man page's list (tests compare them),
+ * so the four cannot drift apart.  The first error ends the load.
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <float.h>
+#include <libconfig.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag.h"
+#include "mem.h"
+#include "scene.h"
+
+enum type {
+	T_GROUP,	/* a group of further settings */
+	T_INT,		/* long long */
+	T_FLOAT,	/* double; integers are accepted */
+	T_IDENT,	/* char[NAME_LEN + 1], [A-Za-z][A-Za-z0-9_]* */
+	T_CHOICE,	/* int: index into the row's word list */
+	T_RANGES	/* the organs list: struct organ_range entries */
+};
+
+enum where {
+	IN_SCENE,	/* offset into struct scene */
+	IN_RANGE	/* offset into struct organ_range */
+};
+
+#define F_LO_OPEN	0x01	/* lo itself is not allowed */
+#define F_REQUIRED	0x02	/* every scene must give it */
+
+#define ALL_MODELS	0u
+#define PLANAR		(1u << MODEL_PLANAR)
+
+/* 360 (2 - tau), tau the golden ratio. */
+#define GOLDEN_ANGLE	137.50776405003785
+
+struct row {
+	const char	*path;	/* dotted, e.g. "planar.scale" */
+	enum type	 type;
+	enum where	 where;
+	unsigned	 models;	/* models it applies to; 0: all */
+	size_t		 off;
+	double		 lo, hi;	/* numbers: the allowed range */
+	unsigned	 flags;
+	double		 def;		/* numbers and choices: default */
+	const char	*defstr;	/* as the man page says it */
+	const char	*words;		/* T_CHOICE: space-separated */
+	const char	*doc;
+};
+
+#define S(f)	offsetof(struct scene, f)
+#define R(f)	offsetof(struct organ_range, f)
+
+static const struct row rows[] = {
+	{ "name", T_IDENT, IN_SCENE, ALL_MODELS, S(name), 0, 0, 0, 0,
+	  "the file name", NULL,
+	  "identifier naming the result: POV-Ray object, Blender collection" },
+	{ "model", T_CHOICE, IN_SCENE, ALL_MODELS, S(model), 0, 0,
+	  F_REQUIRED, 0, "none", "planar cylindrical collision",
+	  "which model places the organs" },
+	{ "divergence", T_FLOAT, IN_SCENE, ALL_MODELS, S(divergence),
+	  -360, 360, 0, GOLDEN_ANGLE, "137.507764", NULL,
+	  "divergence angle between consecutive organs, degrees" },
+	{ "count", T_INT, IN_SCENE, ALL_MODELS, S(count), 1, COUNT_MAX, 0,
+	  0, "none", NULL, "number of organs" },
+	{ "seed", T_INT, IN_SCENE, ALL_MODELS, S(seed), -HUGE_VAL,
+	  HUGE_VAL, 0, 0, "0", NULL, "seed of the random stream" },
+	{ "planar", T_GROUP, IN_SCENE, PLANAR, 0, 0, 0, 0, 0, NULL, NULL,
+	  "settings of the planar model" },
+	{ "planar.scale", T_FLOAT, IN_SCENE, PLANAR, S(planar.scale), 0,
+	  HUGE_VAL, F_LO_OPEN, 1, "1", NULL,
+	  "Vogel's c: organ n lies at radius c n^exponent" },
+	{ "planar.outer", T_FLOAT, IN_SCENE, PLANAR, S(planar.outer), 0,
+	  HUGE_VAL, F_LO_OPEN, 0, "none", NULL,
+	  "radius of the last organ; sets c instead of scale" },
+	{ "planar.inner", T_FLOAT, IN_SCENE, PLANAR, S(planar.inner), 0,
+	  HUGE_VAL, 0, 0, "0", NULL, "radius at which organ 0 sits" },
+	{ "planar.exponent", T_FLOAT, IN_SCENE, PLANAR, S(planar.exponent),
+	  0, 4, F_LO_OPEN, 0.5, "0.5", NULL,
+	  "exponent of n in the radius" },
+	{ "planar.dome", T_FLOAT, IN_SCENE, PLANAR, S(planar.dome),
+	  -HUGE_VAL, HUGE_VAL, 0, 0, "0", NULL,
+	  "height of the centre above the rim (paraboloid); < 0 a dish" },
+	{ "organs", T_RANGES, IN_SCENE, ALL_MODELS, 0, 0, 0, 0, 0, NULL,
+	  NULL, "list of organ entries" },
+	{ "organs.object", T_IDENT, IN_RANGE, ALL_MODELS, R(object), 0, 0,
+	  0, 0, "Organ", NULL, "organ object every organ is an instance of" },
+};
+
+#define NROWS	(sizeof(rows) / sizeof(rows[0]))
+
+static const char *const model_names[MODEL__MAX] = {
+	"planar", "cylindrical", "collision"
+};
+
+/* The loader's state while walking one file. */
+struct load {
+	struct scene	*sc;
+	const char	*file;
+};
+
+const char *
+scene_model_name(int model)
+{
+	return model >= 0 && model < MODEL__MAX ? model_names[model] : "?";
+}
+
+static const struct row *
+row_find(const char *path, enum where where)
+{
+	for (size_t i = 0; i < NROWS; i++)
+		if (rows[i].where == where && strcmp(rows[i].path, path) == 0)
+			return &rows[i];
+	return NULL;
+}
+
+static int
+line_of(const config_setting_t *s)
+{
+	return (int)config_setting_source_line(s);
+}
+
+static const char *
+file_of(const struct load *L, const config_setting_t *s)
+{
+	const char *f = config_setting_source_file(s);
+
+	return f != NULL ? f : L->file;
+}
+
+static void
+err_at(const struct load *L, const config_setting_t *s, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static void
+err_at(const struct load *L, const config_setting_t *s, const char *fmt, ...)
+{
+	char msg[512];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	diag(ST_SCENE, file_of(L, s), line_of(s), 0, "%s", msg);
+}
+
+int
+ident_valid(const char *s)
+{
+	if (!isalpha((unsigned char)s[0]) || (s[0] & 0x80))
+		return 0;
+	for (; *s != '\0'; s++)
+		if (!(isalnum((unsigned char)*s) || *s == '_') ||
+		    (*s & 0x80))
+			return 0;
+	return 1;
+}
+
+/* Store an identifier; names reach POV-Ray and Python, so check hard. */
+static int
+set_ident(struct load *L, const config_setting_t *s, const char *path,
+    char *dst)
+{
+	const char *v = config_setting_get_string(s);
+
+	if (v == NULL) {
+		err_at(L, s, "%s must be a string", path);
+		return -1;
+	}
+	if (strlen(v) > NAME_LEN) {
+		err_at(L, s, "%s is longer than %d characters", path,
+		    NAME_LEN);
+		return -1;
+	}
+	if (!ident_valid(v)) {
+		err_at(L, s, "%s \"%s\" is not an identifier "
+		    "(a letter, then letters, digits or _)", path, v);
+		return -1;
+	}
+	memcpy(dst, v, strlen(v) + 1);
+	return 0;
+}
+
+/* "must be between 1 and 10000000", "must be greater than 0", ... */
+static void
+range_words(const struct row *r, char *buf, size_t sz)
+{
+	const char *lo = r->flags & F_LO_OPEN ? "greater than" : "at least";
+
+	if (isinf(r->hi))
+		snprintf(buf, sz, "must be %s %.15g", lo, r->lo);
+	else if (r->flags & F_LO_OPEN)
+		snprintf(buf, sz, "must be greater than %.15g and at most "
+		    "%.15g", r->lo, r->hi);
+	else
+		snprintf(buf, sz, "must be between %.15g and %.15g",
+		    r->lo, r->hi);
+}
+
+static int
+in_range(const struct row *r, double v)
+{
+	if (r->flags & F_LO_OPEN ? v <= r->lo : v < r->lo)
+		return 0;
+	return v <= r->hi;
+}
+
+static int
+set_number(struct load *L, const config_setting_t *s, const struct row *r,
+    void *dst)
+{
+	char range[128];
+	int type = config_setting_type(s);
+	double v;
+
+	if (type != CONFIG_TYPE_INT && type != CONFIG_TYPE_INT64 &&
+	    type != CONFIG_TYPE_FLOAT) {
+		err_at(L, s, "%s must be %s", r->path,
+		    r->type == T_INT ? "an integer" : "a number");
+		return -1;
+	}
+	if (r->type == T_INT && type == CONFIG_TYPE_FLOAT) {
+		v = config_setting_get_float(s);
+		if (v != floor(v) || fabs(v) > 9007199254740992.0) {
+			err_at(L, s, "%s must be an integer, not %.15g",
+			    r->path, v);
+			return -1;
+		}
+	} else if (type == CONFIG_TYPE_FLOAT)
+		v = config_setting_get_float(s);
+	else
+		v = (double)config_setting_get_int64(s);
+
+	if (!isfinite(v) || !in_range(r, v)) {
+		range_words(r, range, sizeof(range));
+		if (type == CONFIG_TYPE_FLOAT)
+			err_at(L, s, "%s %.15g is out of range: %s", r->path,
+			    v, range);
+		else
+			err_at(L, s, "%s %lld is out of range: %s", r->path,
+			    config_setting_get_int64(s), range);
+		return -1;
+	}
+	if (r->type == T_INT)
+		*(long long *)dst = type == CONFIG_TYPE_FLOAT ?
+		    (long long)v : config_setting_get_int64(s);
+	else
+		*(double *)dst = v;
+	return 0;
+}
+
+static int
+set_choice(struct load *L, const config_setting_t *s, const struct row *r,
+    int *dst)
+{
+	const char *v = config_setting_get_string(s), *w = r->words;
+	size_t len;
+	int i;
+
+	if (v == NULL) {
+		err_at(L, s, "%s must be a string", r->path);
+		return -1;
+	}
+	for (i = 0; *w != '\0'; i++, w += len + (w[len] == ' ')) {
+		len = strcspn(w, " ");
+		if (strlen(v) == len && strncmp(v, w, len) == 0) {
+			*dst = i;
+			return 0;
+		}
+	}
+	err_at(L, s, "%s \"%.40s\" is not one of: %s", r->path, v, r->words);
+	return -1;
+}
+
+static int	load_group(struct load *, const config_setting_t *,
+		    const char *prefix, void *base, enum where);
+
+static int
+load_ranges(struct load *L, const config_setting_t *s)
+{
+	struct scene *sc = L->sc;
+	int n = config_setting_length(s);
+
+	if (config_setting_type(s) != CONFIG_TYPE_LIST) {
+		err_at(L, s, "organs must be a list of groups: "
+		    "organs = ( { object = \"Seed\"; } );");
+		return -1;
+	}
+	if (n > 1) {
+		err_at(L, s, "organs takes one entry (index ranges are not "
+		    "supported yet)");
+		return -1;
+	}
+	sc->ranges = xcalloc((size_t)n, sizeof(*sc->ranges));
+	for (int i = 0; i < n; i++) {
+		config_setting_t *e = config_setting_get_elem(s, (unsigned)i);
+		struct organ_range *rg = &sc->ranges[i];
+
+		if (!config_setting_is_group(e)) {
+			err_at(L, e, "organs entry %d must be a group "
+			    "{ object = \"Seed\"; }", i + 1);
+			return -1;
+		}
+		strcpy(rg->object, "Organ");
+		rg->line = line_of(e);
+		sc->nranges++;
+		if (load_group(L, e, "organs", rg, IN_RANGE) < 0)
+			return -1;
+	}
+	return 0;
+}
+
+static int
+load_setting(struct load *L, const config_setting_t *s, const char *path,
+    void *base, enum where where)
+{
+	const struct row *r = row_find(path, where);
+	struct scene *sc = L->sc;
+	void *dst;
+
+	if (r == NULL) {
+		err_at(L, s, "unknown setting '%s'", path);
+		return -1;
+	}
+	if (r->models != 0 && !(r->models & (1u << sc->model))) {
+		err_at(L, s, "'%s' does not apply to model \"%s\"", path,
+		    scene_model_name(sc->model));
+		return -1;
+	}
+	if (where == IN_SCENE)
+		sc->given[r - rows] = line_of(s);
+	dst = (char *)base + r->off;
+
+	switch (r->type) {
+	case T_GROUP:
+		if (!config_setting_is_group(s)) {
+			err_at(L, s, "%s must be a group: %s = { ... };",
+			    path, path);
+			return -1;
+		}
+		return load_group(L, s, path, base, where);
+	case T_INT:
+	case T_FLOAT:
+		return set_number(L, s, r, dst);
+	case T_IDENT:
+		return set_ident(L, s, path, dst);
+	case T_CHOICE:
+		return set_choice(L, s, r, dst);
+	case T_RANGES:
+		return load_ranges(L, s);
+	}
+	return -1;
+}
+
+static int
+load_group(struct load *L, const config_setting_t *g, const char *prefix,
+    void *base, enum where where)
+{
+	int n = config_setting_length(g);
+
+	for (int i = 0; i < n; i++) {
+		config_setting_t *s = config_setting_get_elem(g, (unsigned)i);
+		char path[128];
+
+		/* The model must be known before its settings are checked. */
+		if (where == IN_SCENE && *prefix == '\0' &&
+		    strcmp(config_setting_name(s), "model") == 0)
+			continue;
+		snprintf(path, sizeof(path), "%s%s%s", prefix,
+		    *prefix ? "." : "", config_setting_name(s));
+		if (load_setting(L, s, path, base, where) < 0)
+			return -1;
+	}
+	return 0;
+}
+
+static void
+set_defaults(struct scene *sc)
+{
+	for (size_t i = 0; i < NROWS; i++) {
+		const struct row *r = &rows[i];
+		char *dst = (char *)sc + r->off;
+
+		if (r->where != IN_SCENE)
+			continue;
+		if (r->type == T_INT)
+			*(long long *)dst = (long long)r->def;
+		else if (r->type == T_FLOAT)
+			*(double *)dst = r->def;
+		else if (r->type == T_CHOICE)
+			*(int *)dst = (int)r->def;
+	}
+}
+
+/* The default name: the file's base name made into an identifier. */
+static void
+name_from_file(char *dst, const char *file)
+{
+	const char *base = strrchr(file, '/');
+	size_t len;
+
+	base = base != NULL ? base + 1 : file;
+	len = strcspn(base, ".");
+	if (len > NAME_LEN)
+		len = NAME_LEN;
+	if (len == 0 || !isalpha((unsigned char)base[0]) ||
+	    (base[0] & 0x80) || strcmp(file, "-") == 0) {
+		strcpy(dst, "phyllotaxis");
+		return;
+	}
+	for (size_t i = 0; i < len; i++) {
+		unsigned char c = (unsigned char)base[i];
+
+		dst[i] = (char)(isalnum(c) && !(c & 0x80) ? c : '_');
+	}
+	dst[len] = '\0';
+}
+
+/* Collect the distinct organ object names the ranges use. */
+static void
+collect_objects(struct scene *sc)
+{
+	static const char *const fallback = "Organ";
+
+	sc->objects = xcalloc(sc->nranges + 1, sizeof(*sc->objects));
+	for (size_t i = 0; i < sc->nranges; i++) {
+		size_t j;
+
+		for (j = 0; j < sc->nobjects; j++)
+			if (strcmp(sc->objects[j], sc->ranges[i].object) == 0)
+				break;
+		if (j == sc->nobjects)
+			sc->objects[sc->nobjects++] = sc->ranges[i].object;
+	}
+	if (sc->nobjects == 0)
+		sc->objects[sc->nobjects++] = fallback;
+}
+
+static int
+load_root(struct load *L, const config_setting_t *root)
+{
+	struct scene *sc = L->sc;
+	const config_setting_t *m = config_setting_get_member(root, "model");
+	const struct row *mr = row_find("model", IN_SCENE);
+
+	if (m == NULL) {
+		diag(ST_SCENE, L->file, 1, 0, "missing setting 'model' "
+		    "(one of: %s)", mr->words);
+		return -1;
+	}
+	sc->given[mr - rows] = line_of(m);
+	if (set_choice(L, m, mr, &sc->model) < 0)
+		return -1;
+	if (load_group(L, root, "", sc, IN_SCENE) < 0)
+		return -1;
+	if (!sc->given[row_find("name", IN_SCENE) - rows])
+		name_from_file(sc->name, L->file);
+	collect_objects(sc);
+	return 0;
+}
+
+int
+scene_load_buffer(struct scene *sc, const char *file, const char *text,
+    size_t len)
+{
+	struct load L = { sc, file };
+	const char *nul = memchr(text, '\0', len);
+	config_t cfg;
+	int rc = -1;
+
+	*sc = (struct scene){ .file = file };
+	sc->given = xcalloc(NROWS, sizeof(*sc->given));
+	set_defaults(sc);
+
+	if (nul != NULL) {
+		int line = 1;
+
+		for (const char *p = text; p < nul; p++)
+			line += *p == '\n';
+		diag(ST_SCENE, file, line, 0, "NUL byte in scene file");
+		return -1;
+	}
+	config_init(&cfg);
+	if (config_read_string(&cfg, text) != CONFIG_TRUE) {
+		const char *f = config_error_file(&cfg);
+		const char *why = config_error_text(&cfg);
+
+		/* Bison says this when nesting overflows its stack. */
+		if (strcmp(why, "memory exhausted") == 0)
+			why = "groups or lists nested too deeply";
+		diag(ST_SCENE, f != NULL ? f : file,
+		    config_error_line(&cfg), 0, "%s", why);
+	} else
+		rc = load_root(&L, config_root_setting(&cfg));
+	config_destroy(&cfg);
+	/* Names were copied into the scene, so nothing points into cfg. */
+	return rc;
+}
+
+/* Load from a path, "-" meaning standard input. */
+int
+scene_load(struct scene *sc, const char *path)
+{
+	const char *file = strcmp(path, "-") == 0 ? "<stdin>" : path;
+	FILE *fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+	char *text = NULL;
+	size_t len = 0, cap = 0, got;
+	int rc;
+
+	if (fp == NULL) {
+		diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));
+		*sc = (struct scene){ .file = file };
+		return -1;
+	}
+	do {
+		if (cap - len < 65536)
+			text = xreallocarray(text, cap = cap * 2 + 65536, 1);
+		got = fread(text + len, 1, cap - len - 1, fp);
+		len += got;
+	} while (got > 0 && len <= (size_t)SCENE_BYTES_MAX);
+	if (ferror(fp) || len > (size_t)SCENE_BYTES_MAX) {
+		if (ferror(fp))
+			diag(ST_SYSTEM, file, 0, 0, "%s", strerror(errno));
+		else
+			diag(ST_SCENE, file, 0, 0, "scene file is larger "
+			    "than %ld bytes", SCENE_BYTES_MAX);
+		if (fp != stdin)
+			fclose(fp);
+		free(text);
+		*sc = (struct scene){ .file = file };
+		return -1;
+	}
+	if (fp != stdin)
+		fclose(fp);
+	text[len] = '\0';
+	rc = scene_load_buffer(sc, file, text, len);
+	free(text);
+	return rc;
+}
+
+void
+scene_free(struct scene *sc)
+{
+	free(sc->ranges);
+	free(sc->objects);
+	free(sc->given);
+	*sc = (struct scene){0};
+}
+
+/* The line a setting was given on, or 0. */
+int
+scene_given(const struct scene *sc, const char *path)
+{
+	const struct row *r = row_find(path, IN_SCENE);
+
+	return r != NULL && sc->given != NULL ? sc->given[r - rows] : 0;
+}
+
+/*
+ * An error found after loading (by a model's checks), at the line of
+ * the setting named, else of its enclosing group, else line 1.
+ */
+void
+scene_error(const struct scene *sc, const char *path, const char *fmt, ...)
+{
+	char msg[512], key[128];
+	int line = 0;
+	va_list ap;
+
+	snprintf(key, sizeof(key), "%s", path);
+	while ((line = scene_given(sc, key)) == 0) {
+		char *dot = strrchr(key, '.');
+
+		if (dot == NULL)
+			break;
+		*dot = '\0';
+	}
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	diag(ST_SCENE, sc->file, line > 0 ? line : 1, 0, "%s", msg);
+}
+
+/* The table, one setting a line, for the test that checks the man page. */
+void
+scene_settings_list(FILE *fp)
+{
+	static const char *const tn[] = {
+		"group", "integer", "number", "identifier", "string", "list"
+	};
+
+	for (size_t i = 0; i < NROWS; i++)
+		fprintf(fp, "%s\t%s\t%s\n", rows[i].path, tn[rows[i].type],
+		    rows[i].defstr != NULL ? rows[i].defstr : "");
+}

@@ -1,0 +1,61 @@
+/* scene.h - a scene file, loaded and checked against the settings table. */
+#ifndef SCENE_H
+#define SCENE_H
+
+#include <stdio.h>
+
+#define NAME_LEN	32		/* longest name or organ object name */
+#define COUNT_MAX	10000000	/* most organs a scene may ask for */
+#define SCENE_BYTES_MAX	(16L * 1024 * 1024)
+
+enum model {
+	MODEL_PLANAR,
+	MODEL_CYLINDRICAL,
+	MODEL_COLLISION,
+	MODEL__MAX
+};
+
+struct planar_params {
+	double	 scale;		/* Vogel's c */
+	double	 outer;		/* fit c so the last organ sits here */
+	double	 inner;		/* radius of the first ring */
+	double	 exponent;	/* r = inner + c n^exponent */
+	double	 dome;		/* height of the centre above the rim */
+};
+
+struct organ_range {
+	char	 object[NAME_LEN + 1];
+	int	 line;
+};
+
+struct scene {
+	const char	*file;		/* as named in messages */
+	char		 name[NAME_LEN + 1];
+	int		 model;		/* enum model */
+	double		 divergence;	/* degrees */
+	long long	 count;
+	long long	 seed;
+	struct planar_params planar;
+	struct organ_range *ranges;	/* owned */
+	size_t		 nranges;
+	const char	**objects;	/* distinct organ object names */
+	size_t		 nobjects;
+	int		*given;		/* per table row: line, or 0 */
+};
+
+int	 ident_valid(const char *);
+int	 scene_load(struct scene *, const char *path);
+int	 scene_load_buffer(struct scene *, const char *file,
+	    const char *text, size_t len);
+void	 scene_free(struct scene *);
+int	 scene_given(const struct scene *, const char *path);
+void	 scene_error(const struct scene *, const char *path,
+	    const char *fmt, ...)
+#if defined(__GNUC__)
+	    __attribute__((format(printf, 3, 4)))
+#endif
+	    ;
+const char *scene_model_name(int model);
+void	 scene_settings_list(FILE *);
+
+#endif

@@ -1,0 +1,283 @@
+/*
+ * test_model.c - properties of the numeric core: the number formatter,
+ * exact angles, and the planar model's geometry.  Each check prints
+ * "ok - what" or "not ok - what"; tests/run.sh counts them.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model.h"
+#include "numfmt.h"
+#include "scene.h"
+#include "vec.h"
+
+static int failures;
+
+static void
+check(int ok, const char *fmt, ...)
+{
+	va_list ap;
+
+	printf("%s - ", ok ? "ok" : "not ok");
+	va_start(ap, fmt);
+	vprintf(fmt, ap);
+	va_end(ap);
+	putchar('\n');
+	failures += !ok;
+}
+
+/* A deterministic stream of doubles for the formatter checks. */
+static unsigned long long rng = 0x9e3779b97f4a7c15ull;
+
+static double
+uniform(void)
+{
+	rng ^= rng << 13;
+	rng ^= rng >> 7;
+	rng ^= rng << 17;
+	return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+static void
+test_numfmt(void)
+{
+	char ours[NUMFMT_MAX], ref[NUMFMT_MAX];
+	double worst = 0;
+	long differ = 0, n = 300000;
+
+	for (long i = 0; i < n; i++) {
+		double x = (uniform() - 0.5) * pow(10, floor(uniform() * 30) - 15);
+		double back;
+
+		num_format(ours, x);
+		snprintf(ref, sizeof(ref), "%.9g", x);
+		back = strtod(ours, NULL);
+		if (x != 0)
+			worst = fmax(worst, fabs(back - x) / fabs(x));
+		differ += strcmp(ours, ref) != 0;
+	}
+	check(worst <= 5.0000001e-9, "numfmt: 9 significant digits "
+	    "(worst relative error %.3g over %ld numbers)", worst, n);
+	/* Only rounding ties may differ from printf, and they are rare. */
+	check(differ * 10000 < n, "numfmt: same text as %%.9g "
+	    "(%ld of %ld differ)", differ, n);
+	num_format(ours, 0.0);
+	check(strcmp(ours, "0") == 0, "numfmt: zero is \"0\"");
+	num_format(ours, -0.0);
+	check(strcmp(ours, "0") == 0, "numfmt: negative zero is \"0\"");
+	num_format(ours, 1e-5);
+	check(strcmp(ours, "1e-05") == 0, "numfmt: 1e-5 as %%g writes it");
+	num_format(ours, 123456789.0);
+	check(strcmp(ours, "123456789") == 0, "numfmt: 9-digit integer");
+	num_format(ours, 0.1 + 0.2);
+	check(strcmp(ours, "0.3") == 0, "numfmt: 0.1 + 0.2 is 0.3");
+}
+
+static void
+test_angle(void)
+{
+	const double alpha = 137.50776405003785;
+	double worst = 0;
+
+	/*
+	 * The long double product carries 64 bits, enough to show the
+	 * 1e-7 degree error a plain double product would make.
+	 */
+	for (long n = 1; n <= 10000000; n += 9973) {
+		long double ref = fmodl((long double)n * (long double)alpha,
+		    360.0L);
+		double got = angle_mod360((double)n, alpha);
+
+		worst = fmax(worst, fabs((double)(ref - (long double)got)));
+	}
+	check(worst < 2e-10, "angle_mod360 exact to %.2g degree up to "
+	    "n = 1e7", worst);
+	check(angle_mod360(3, -90) == 90, "angle_mod360 of a negative "
+	    "divergence lies in [0, 360)");
+}
+
+/* Load a scene from text and run its model; 0 on success. */
+static int
+run(const char *text, struct scene *sc, struct result *res)
+{
+	*res = (struct result){0};
+	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
+		return -1;
+	return planar_run(sc, res);
+}
+
+/* Largest deviation from an orthonormal right-handed frame. */
+static double
+frame_error(const struct organ *o)
+{
+	double c[3], e = 0;
+
+	e = fmax(e, fabs(vec_dot(o->u, o->u) - 1));
+	e = fmax(e, fabs(vec_dot(o->v, o->v) - 1));
+	e = fmax(e, fabs(vec_dot(o->w, o->w) - 1));
+	e = fmax(e, fabs(vec_dot(o->u, o->v)));
+	e = fmax(e, fabs(vec_dot(o->u, o->w)));
+	e = fmax(e, fabs(vec_dot(o->v, o->w)));
+	vec_cross(c, o->u, o->v);
+	for (int i = 0; i < 3; i++)
+		e = fmax(e, fabs(c[i] - o->w[i]));
+	return e;
+}
+
+static double
+angle_diff(double a, double b)
+{
+	double d = fmod(fabs(a - b), 360);
+
+	return fmin(d, 360 - d);
+}
+
+static void
+test_planar_vogel(void)
+{
+	struct scene sc;
+	struct result res;
+	double er = 0, ea = 0, ef = 0, eu = 0;
+	const double c = 0.7, alpha = 137.3;
+
+	if (run("model = \"planar\"; count = 5000; divergence = 137.3;\n"
+	    "planar = { scale = 0.7; };", &sc, &res) != 0) {
+		check(0, "planar: scene loads");
+		return;
+	}
+	for (size_t n = 0; n < res.count; n++) {
+		const struct organ *o = &res.organs[n];
+		double rho = hypot(o->pos[0], o->pos[1]);
+		double ang = atan2(o->pos[1], o->pos[0]) * 180 / M_PI;
+		double want = fmod((double)n * alpha, 360);
+
+		er = fmax(er, fabs(rho - c * sqrt((double)n)));
+		if (n > 0)
+			ea = fmax(ea, angle_diff(ang, want));
+		ef = fmax(ef, frame_error(o));
+		/* u radially outward, w = +Z. */
+		if (n > 0)
+			eu = fmax(eu, fabs(o->u[0] - o->pos[0] / rho) +
+			    fabs(o->u[1] - o->pos[1] / rho) + fabs(o->u[2]));
+		eu = fmax(eu, fabs(o->w[2] - 1) + fabs(o->pos[2]));
+	}
+	check(er < 1e-12, "planar: r = c sqrt(n) (worst %.2g)", er);
+	check(ea < 1e-9, "planar: angle = n alpha (worst %.2g degree)", ea);
+	check(ef < 1e-12, "planar: frames orthonormal, right-handed "
+	    "(worst %.2g)", ef);
+	check(eu < 1e-12, "planar: u radial, w = +Z on a flat disk");
+	check(res.organs[0].u[0] == 1 && res.organs[0].pos[0] == 0,
+	    "planar: organ 0 at the centre facing +X");
+	check(fabs(res.organs[7].radius - c * sqrt(M_PI / (2 * sqrt(3)))) <
+	    1e-12, "planar: packing radius c sqrt(pi / (2 sqrt 3))");
+	result_free(&res);
+	scene_free(&sc);
+}
+
+static void
+test_planar_variants(void)
+{
+	struct scene sc;
+	struct result res;
+	double ez = 0, en = 0, ef = 0;
+
+	if (run("model = \"planar\"; count = 300;\n"
+	    "planar = { outer = 2.5; inner = 0.5; exponent = 0.6; };",
+	    &sc, &res) == 0) {
+		const struct organ *o = res.organs;
+		double c = 2.0 / pow(299, 0.6);
+
+		check(fabs(hypot(o[299].pos[0], o[299].pos[1]) - 2.5) < 1e-12,
+		    "planar: outer puts the last organ at the outer radius");
+		check(fabs(hypot(o[0].pos[0], o[0].pos[1]) - 0.5) < 1e-12,
+		    "planar: inner puts organ 0 at the inner radius");
+		check(fabs(hypot(o[77].pos[0], o[77].pos[1]) -
+		    (0.5 + c * pow(77, 0.6))) < 1e-12,
+		    "planar: r = inner + c n^exponent");
+	} else
+		check(0, "planar: variants scene loads");
+	result_free(&res);
+	scene_free(&sc);
+
+	if (run("model = \"planar\"; count = 800;\n"
+	    "planar = { scale = 0.1; dome = 0.6; };", &sc, &res) == 0) {
+		double rim = 0.1 * sqrt(799.0);
+
+		for (size_t n = 0; n < res.count; n++) {
+			const struct organ *o = &res.organs[n];
+			double rho = hypot(o->pos[0], o->pos[1]);
+			/* Gradient of f = z - dome (1 - rho^2/rim^2). */
+			double g[3] = { 1.2 * o->pos[0] / (rim * rim),
+			    1.2 * o->pos[1] / (rim * rim), 1 }, cr[3];
+
+			ez = fmax(ez, fabs(o->pos[2] -
+			    0.6 * (1 - rho * rho / (rim * rim))));
+			vec_normalize(g);
+			vec_cross(cr, g, o->w);
+			en = fmax(en, sqrt(vec_dot(cr, cr)) +
+			    fabs(vec_dot(o->u, g)));
+			ef = fmax(ef, frame_error(o));
+			if (n > 0 && (o->u[2] > 0 ||
+			    o->u[0] * o->pos[0] + o->u[1] * o->pos[1] <= 0))
+				en = 1;
+		}
+		check(ez < 1e-12, "planar: dome centres on the paraboloid");
+		check(en < 1e-12, "planar: dome w normal, u tangent pointing "
+		    "outward and down");
+		check(ef < 1e-12, "planar: dome frames orthonormal");
+	} else
+		check(0, "planar: dome scene loads");
+	result_free(&res);
+	scene_free(&sc);
+}
+
+static int
+is_fib_pair(int a, int b)
+{
+	int f0 = 1, f1 = 2;
+
+	while (f0 < a) {
+		int t = f0 + f1;
+
+		f0 = f1;
+		f1 = t;
+	}
+	return f0 == a && f1 == b;
+}
+
+static void
+test_parastichies(void)
+{
+	static const char *const counts[] = { "100", "1000", "5000" };
+
+	for (size_t i = 0; i < 3; i++) {
+		char text[128];
+		struct scene sc;
+		struct result res;
+		int pair[2] = { 0, 0 };
+
+		snprintf(text, sizeof(text), "model = \"planar\"; count = %s;",
+		    counts[i]);
+		if (run(text, &sc, &res) == 0)
+			parastichies(&res, res.count - 1, pair);
+		check(is_fib_pair(pair[0], pair[1]), "parastichies of %s "
+		    "organs at the golden angle are consecutive Fibonacci "
+		    "numbers (%d, %d)", counts[i], pair[0], pair[1]);
+		result_free(&res);
+		scene_free(&sc);
+	}
+}
+
+int
+main(void)
+{
+	test_numfmt();
+	test_angle();
+	test_planar_vogel();
+	test_planar_variants();
+	test_parastichies();
+	return failures != 0;
+}
