@@ -8,16 +8,20 @@
 /*
  * n*deg mod 360.  For a million organs n*deg is near 1e8 and its
  * rounding would cost seven digits of the angle; fma() recovers the
- * product's rounding error exactly, and fmod() itself is exact.
+ * product's rounding error exactly, and p - 360k is exact too (the
+ * result needs no more bits than p has below 360).
  */
 double
 angle_mod360(double n, double deg)
 {
 	double p = n * deg, err = fma(n, deg, -p);
-	double a = fmod(p, 360.0) + err;
+	double a = fma(-360.0, floor(p / 360.0), p) + err;
 
-	a = fmod(a, 360.0);
-	return a < 0 ? a + 360.0 : a;
+	if (a >= 360.0)
+		a -= 360.0;
+	else if (a < 0)
+		a += 360.0;
+	return a;
 }
 
 /*

@@ -28,15 +28,22 @@ static const double p10[] = {
 static uint64_t
 scaled(double a, int k)
 {
-	return (uint64_t)llround(k >= 0 ? a * p10[k] : a / p10[-k]);
+	return (uint64_t)((k >= 0 ? a * p10[k] : a / p10[-k]) + 0.5);
 }
+
+/* "00" to "99", for writing two digits at a time. */
+static const char pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233"
+    "34353637383940414243444546474849505152535455565758596061626364656667"
+    "6869707172737475767778798081828384858687888990919293949596979899";
 
 size_t
 num_format(char *out, double x)
 {
 	char digits[9], *p = out;
 	double a = fabs(x);
-	uint64_t m;
+	uint64_t bits, m;
+	uint32_t v;
 	int e, nd;
 
 	if (a == 0.0) {
@@ -47,19 +54,31 @@ num_format(char *out, double x)
 	if (!isfinite(x) || a < 1e-13 || a >= 1e13)
 		return (size_t)snprintf(out, NUMFMT_MAX, "%.9g", x);
 
-	e = (int)floor(log10(a));
+	/*
+	 * The decimal exponent from the binary one, which log10() would
+	 * give at twice the cost: 2^b <= a < 2^(b+1) puts floor(log10 a)
+	 * within one of b log10(2), and the checks on m settle it.
+	 */
+	memcpy(&bits, &a, sizeof(bits));
+	e = (int)(((int)(bits >> 52) - 1023) * 0.30102999566398120);
 	m = scaled(a, 8 - e);
-	/* log10 may be off by one near powers of ten; so may rounding. */
-	if (m < 100000000u) {
-		e--;
-		m = scaled(a, 8 - e);
-	}
 	if (m >= 1000000000u) {
 		e++;
 		m = scaled(a, 8 - e);
 	}
-	for (int i = 8; i >= 0; i--, m /= 10)
-		digits[i] = (char)('0' + m % 10);
+	if (m < 100000000u) {
+		e--;
+		m = scaled(a, 8 - e);
+	}
+	/* Rounding up 999999999.5 gives 1e9: one digit more. */
+	if (m >= 1000000000u) {
+		e++;
+		m = scaled(a, 8 - e);
+	}
+	v = (uint32_t)m;
+	for (int i = 7; i > 0; i -= 2, v /= 100)
+		memcpy(digits + i, pairs + 2 * (v % 100), 2);
+	digits[0] = (char)('0' + v);
 	for (nd = 9; nd > 1 && digits[nd - 1] == '0'; nd--)
 		continue;
 

@@ -8,17 +8,11 @@
 
 #include "model.h"
 
-/* Radius at index n, and its derivative with respect to n. */
+/* n^e; pow() is the model's costliest call, and e is mostly 1/2. */
 static double
-ring(const struct planar_params *p, double c, double n)
+power(double n, double e)
 {
-	return p->inner + c * pow(n, p->exponent);
-}
-
-static double
-ring_slope(const struct planar_params *p, double c, double n)
-{
-	return c * p->exponent * pow(n, p->exponent - 1);
+	return e == 0.5 ? sqrt(n) : pow(n, e);
 }
 
 static int
@@ -56,7 +50,7 @@ planar_run(const struct scene *sc, struct result *res)
 		c = count > 1 ? (p->outer - p->inner) /
 		    pow((double)(count - 1), p->exponent) :
 		    p->outer - p->inner;
-	rim = ring(p, c, (double)(count - 1));
+	rim = p->inner + c * power((double)(count - 1), p->exponent);
 	/* z = dome * (1 - (rho/rim)^2), so dz/drho = -kdome * rho. */
 	kdome = rim > 0 ? 2 * p->dome / (rim * rim) : 0;
 
@@ -66,8 +60,9 @@ planar_run(const struct scene *sc, struct result *res)
 	for (size_t n = 0; n < count; n++) {
 		struct organ *o = &res->organs[n];
 		double phi = angle_mod360((double)n, sc->divergence);
-		double rho = ring(p, c, (double)n);
-		double m = n > 1 ? (double)n : 1;
+		/* m: organ 0 takes its area per organ from n = 1. */
+		double m = n > 1 ? (double)n : 1, pm = power(m, p->exponent);
+		double rho = p->inner + (n > 0 ? c * pm : 0);
 		double cs = cos(phi * (M_PI / 180)), sn = sin(phi * (M_PI / 180));
 		double slope = -kdome * rho, k = 1 / sqrt(1 + slope * slope);
 		double z = rim > 0 ? p->dome * (1 - (rho / rim) * (rho / rim)) :
@@ -89,8 +84,8 @@ planar_run(const struct scene *sc, struct result *res)
 		o->v[1] = cs;
 		o->v[2] = 0;
 		/* Area per organ d(pi rho^2)/dn shared as hexagons. */
-		o->radius = sqrt(M_PI * ring(p, c, m) * ring_slope(p, c, m) /
-		    sqrt(3.0));
+		o->radius = sqrt(M_PI * (p->inner + c * pm) *
+		    (c * p->exponent * pm / m) / sqrt(3.0));
 		o->scale = o->radius;
 		o->object = 0;
 	}

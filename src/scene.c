@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cfgtext.h"
 #include "diag.h"
 #include "mem.h"
 #include "scene.h"
@@ -184,8 +185,11 @@ set_ident(struct load *L, const config_setting_t *s, const char *path,
 		return -1;
 	}
 	if (!ident_valid(v)) {
+		char q[64];
+
+		cfgtext_quote(q, sizeof(q), v);
 		err_at(L, s, "%s \"%s\" is not an identifier "
-		    "(a letter, then letters, digits or _)", path, v);
+		    "(a letter, then letters, digits or _)", path, q);
 		return -1;
 	}
 	memcpy(dst, v, strlen(v) + 1);
@@ -265,6 +269,7 @@ set_choice(struct load *L, const config_setting_t *s, const struct row *r,
     int *dst)
 {
 	const char *v = config_setting_get_string(s), *w = r->words;
+	char q[64];
 	size_t len;
 	int i;
 
@@ -279,7 +284,8 @@ set_choice(struct load *L, const config_setting_t *s, const struct row *r,
 			return 0;
 		}
 	}
-	err_at(L, s, "%s \"%.40s\" is not one of: %s", r->path, v, r->words);
+	cfgtext_quote(q, sizeof(q), v);
+	err_at(L, s, "%s \"%s\" is not one of: %s", r->path, q, r->words);
 	return -1;
 }
 
@@ -475,24 +481,20 @@ scene_load_buffer(struct scene *sc, const char *file, const char *text,
     size_t len)
 {
 	struct load L = { sc, file };
-	const char *nul = memchr(text, '\0', len);
 	config_t cfg;
-	int rc = -1;
+	char *ready;
+	int rc = -1, nul_line;
 
 	*sc = (struct scene){ .file = file };
 	sc->given = xcalloc(NROWS, sizeof(*sc->given));
 	set_defaults(sc);
 
-	if (nul != NULL) {
-		int line = 1;
-
-		for (const char *p = text; p < nul; p++)
-			line += *p == '\n';
-		diag(ST_SCENE, file, line, 0, "NUL byte in scene file");
+	if ((ready = cfgtext_prepare(text, len, &nul_line)) == NULL) {
+		diag(ST_SCENE, file, nul_line, 0, "NUL byte in scene file");
 		return -1;
 	}
 	config_init(&cfg);
-	if (config_read_string(&cfg, text) != CONFIG_TRUE) {
+	if (config_read_string(&cfg, ready) != CONFIG_TRUE) {
 		const char *f = config_error_file(&cfg);
 		const char *why = config_error_text(&cfg);
 
@@ -503,6 +505,7 @@ scene_load_buffer(struct scene *sc, const char *file, const char *text,
 		    config_error_line(&cfg), 0, "%s", why);
 	} else
 		rc = load_root(&L, config_root_setting(&cfg));
+	free(ready);
 	config_destroy(&cfg);
 	/* Names were copied into the scene, so nothing points into cfg. */
 	return rc;

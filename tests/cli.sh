@@ -1,0 +1,186 @@
+#!/bin/sh
+# cli.sh - the command line as a user meets it: exit codes, stdout vs
+# stderr, standard input, -o replacing files only on success, write
+# errors, and broken scene files no golden file can hold.
+. tests/lib.sh
+
+SUN=scenes/sunflower.cfg
+GOOD=tests/golden/vogel90.cfg
+
+try "--help prints usage on stdout and exits 0" px --help
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "usage on stdout" 'grep -q "^usage: phyllo-export" $OUT/stdout'
+assert "lists --csv and --info" 'grep -q -- "--csv" $OUT/stdout && grep -q -- "--info" $OUT/stdout'
+assert "stderr empty" '[ ! -s $OUT/stderr ]'
+end
+
+try "--help lists only formats that work" px --help
+for f in $(grep -o -- '^  --[a-z]*' "$OUT/stdout" | sed 's/^  --//'); do
+	px "--$f" "$GOOD" >/dev/null 2>&1 || bad="$bad; --$f fails"
+done
+end
+
+try "--version prints the version" px --version
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "name and number" 'grep -Eq "^phyllo-export [0-9]+\.[0-9]+" $OUT/stdout'
+end
+
+try "no format is a usage error" px "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+assert "says so" 'grep -q "no output format given" $OUT/stderr'
+assert "stdout empty" '[ ! -s $OUT/stdout ]'
+end
+
+try "two formats are a usage error" px --csv --info "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+assert "names both" 'grep -q "choose one of --csv and --info" $OUT/stderr'
+end
+
+try "an unknown option is a usage error" px --csv --frobnicate "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+assert "names it" 'grep -q "unknown option --frobnicate" $OUT/stderr'
+end
+
+try "-o without a file is a usage error" px --csv "$GOOD" -o
+assert "exit 2" '[ $rc -eq 2 ]'
+assert "says so" 'grep -q "option -o needs an argument" $OUT/stderr'
+end
+
+try "no scene file is a usage error" px --csv
+assert "exit 2" '[ $rc -eq 2 ]'
+end
+
+try "a missing scene file is a system error" px --csv tests/no-such.cfg
+assert "exit 3" '[ $rc -eq 3 ]'
+assert "names file and reason" 'grep -q "^phyllo-export: tests/no-such.cfg: No such file" $OUT/stderr'
+end
+
+try "- reads the scene from standard input" sh -c '"$0" "$@" < '"$SUN" "$PHYLLO" --csv -
+px --csv "$SUN" >"$OUT/from-file" 2>/dev/null
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "same as from the file" 'cmp -s $OUT/stdout $OUT/from-file'
+end
+
+try "errors from standard input name <stdin>" sh -c 'printf "model = \"planar\";\ncount = -1;\n" | "$0" --csv -' "$PHYLLO"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -q "^phyllo-export: <stdin>:2: count -1 is out of range" $OUT/stderr'
+end
+
+try "the default name comes from the file name" px --info tests/golden/rings.cfg
+assert "name: rings" 'grep -q "^name: rings$" $OUT/stdout'
+end
+
+cp "$GOOD" "$OUT/my-head.v2.cfg"
+try "a file name that is no identifier still gives one" px --info "$OUT/my-head.v2.cfg"
+assert "name: my_head" 'grep -q "^name: my_head$" $OUT/stdout'
+end
+
+try "-o writes the file and nothing to stdout" px --csv -o "$OUT/a.csv" "$GOOD"
+px --csv "$GOOD" >"$OUT/a-ref.csv"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "stdout empty" '[ ! -s $OUT/stdout ]'
+assert "file written" 'cmp -s $OUT/a.csv $OUT/a-ref.csv'
+assert "mode follows the umask" '[ "$(umask 022; px --csv -o $OUT/m.csv $GOOD; stat -c %a $OUT/m.csv)" = 644 ]'
+end
+
+printf 'precious\n' >"$OUT/keep.csv"
+try "-o leaves its target alone on a scene error" px --csv -o "$OUT/keep.csv" tests/bad/count-negative.cfg
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "target unchanged" '[ "$(cat $OUT/keep.csv)" = precious ]'
+assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.keep")" ]'
+end
+
+try "-o into a missing directory is a system error" px --csv -o "$OUT/no/such/dir/x.csv" "$GOOD"
+assert "exit 3" '[ $rc -eq 3 ]'
+assert "names the file" 'grep -q "x.csv" $OUT/stderr'
+end
+
+if [ -w /dev/full ]; then
+	try "a full disk is a system error (-o /dev/full)" px --csv -o /dev/full "$SUN"
+	assert "exit 3" '[ $rc -eq 3 ]'
+	assert "says why" 'grep -q "No space left on device" $OUT/stderr'
+	end
+
+	try "a full disk is a system error (stdout to /dev/full)" sh -c '"$0" --csv "$1" >/dev/full' "$PHYLLO" "$SUN"
+	assert "exit 3" '[ $rc -eq 3 ]'
+	assert "says why" 'grep -q "No space left on device" $OUT/stderr'
+	end
+else
+	skip "no writable /dev/full"
+fi
+
+try "a closed stdout is a system error" sh -c '"$0" --csv "$1" >&-' "$PHYLLO" "$SUN"
+assert "exit 3" '[ $rc -eq 3 ]'
+assert "says so" 'grep -q "^phyllo-export: <stdout>: " $OUT/stderr'
+end
+
+# Inputs too awkward to keep as golden files.
+printf 'model = "planar";\ncount = 3;\nname = "a\0b";\n' >"$OUT/nul.cfg"
+try "a NUL byte is an error with its line" px --csv "$OUT/nul.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qx "phyllo-export: $OUT/nul.cfg:3: NUL byte in scene file" $OUT/stderr'
+assert "stdout empty" '[ ! -s $OUT/stdout ]'
+end
+
+head -c 4096 "$PHYLLO" | tr -d '\000' >"$OUT/garbage.cfg"
+try "binary garbage is a clean error" px --csv "$OUT/garbage.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "one line FILE:LINE: message" '[ $(wc -l <$OUT/stderr) -eq 1 ] && grep -Eq "^phyllo-export: $OUT/garbage.cfg:[0-9]+: " $OUT/stderr'
+end
+
+awk 'BEGIN { printf "model = \"planar\";\ncount = 3;\nname = \""; for (i = 0; i < 1048576; i++) printf "x"; print "\";" }' >"$OUT/long.cfg"
+try "a 1 MB string is a clean error" px --csv "$OUT/long.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qx "phyllo-export: $OUT/long.cfg:3: name is longer than 32 characters" $OUT/stderr'
+end
+
+awk 'BEGIN { printf "model = \"planar\";\ncount = 3;\nplanar = "; for (i = 0; i < 20000; i++) printf "{ a = "; printf "1;"; for (i = 0; i < 20000; i++) printf " };"; print "" }' >"$OUT/deep.cfg"
+try "deeply nested groups are a clean error" px --csv "$OUT/deep.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qx "phyllo-export: $OUT/deep.cfg:3: groups or lists nested too deeply" $OUT/stderr'
+end
+
+awk 'BEGIN { printf "model = \"planar\";\ncount = 3;\nplanar = { a = { b = { c = 1; }; }; };\n" }' >"$OUT/nested.cfg"
+try "a nested unknown group names its full path" px --csv "$OUT/nested.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qx "phyllo-export: $OUT/nested.cfg:3: unknown setting .planar.a." $OUT/stderr'
+end
+
+printf 'model = "planar";\nname = "Bad\001\nName";\ncount = 3;\n' >"$OUT/ctrl.cfg"
+try "control characters in a bad name are escaped in the message" px --csv "$OUT/ctrl.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "one line" '[ $(wc -l <$OUT/stderr) -eq 1 ]'
+assert "escaped" 'grep -q "Bad\\\\x01\\\\x0aName" $OUT/stderr'
+end
+
+# Big outputs: skipped under valgrind (RUN set), where they take minutes.
+if [ -n "$RUN" ]; then
+	skip "big outputs under $RUN"
+	exit 0
+fi
+
+# A run killed while writing leaves neither a temporary file nor a
+# changed target.  5 M organs take seconds to write, time to catch it.
+printf 'model = "planar";\ncount = 5000000;\n' >"$OUT/big.cfg"
+printf 'precious\n' >"$OUT/sig.csv"
+try "SIGTERM while writing removes the temporary file" true
+"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
+pid=$!
+i=0
+while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^\.sig')" ]; do
+	sleep 0.05
+	i=$((i + 1))
+done
+kill -TERM $pid 2>/dev/null
+wait $pid 2>/dev/null
+rc=$?
+assert "the temporary file had appeared" '[ $i -lt 200 ]'
+assert "killed by the signal" '[ $rc -gt 128 ]'
+assert "target unchanged" '[ "$(cat $OUT/sig.csv)" = precious ]'
+assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.sig")" ]'
+end
+
+printf 'model = "planar";\ncount = 1000000;\n' >"$OUT/million.cfg"
+try "a million organs are written in full" sh -c '"$0" --csv "$1" | wc -l' "$PHYLLO" "$OUT/million.cfg"
+assert "1000001 lines" '[ "$(cat $OUT/stdout)" -eq 1000001 ]'
+end

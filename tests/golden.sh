@@ -1,0 +1,36 @@
+#!/bin/sh
+# golden.sh - tests/golden/NAME.cfg against NAME.csv (numbers compared
+# to 1e-8) and NAME.info (exact); tests/bad/NAME.cfg against NAME.err
+# (exact), with exit 1, nothing on stdout, and -o's target untouched.
+. tests/lib.sh
+
+for cfg in tests/golden/*.cfg; do
+	base=${cfg%.cfg}
+	name=$(basename "$base")
+	if [ -f "$base.csv" ]; then
+		try "golden $name.csv" px --csv "$cfg"
+		assert "exit 0" '[ $rc -eq 0 ]'
+		assert "nothing on stderr" '[ ! -s $OUT/stderr ]'
+		assert "numbers match $base.csv" 'csv_close "$base.csv" "$OUT/stdout" >"$OUT/diff"'
+		end
+	fi
+	if [ -f "$base.info" ]; then
+		try "golden $name.info" px --info "$cfg"
+		assert "exit 0" '[ $rc -eq 0 ]'
+		assert "same as $base.info" 'diff -u "$base.info" "$OUT/stdout" >"$OUT/diff"'
+		end
+	fi
+done
+
+for cfg in tests/bad/*.cfg; do
+	base=${cfg%.cfg}
+	name=$(basename "$base")
+	printf 'precious\n' >"$OUT/target"
+	try "bad $name" px --csv -o "$OUT/target" "$cfg"
+	assert "exit 1" '[ $rc -eq 1 ]'
+	assert "nothing on stdout" '[ ! -s $OUT/stdout ]'
+	assert "message as in $base.err" 'diff -u "$base.err" "$OUT/stderr" >"$OUT/diff"'
+	assert "-o target untouched" '[ "$(cat "$OUT/target")" = precious ]'
+	assert "no temporary file left" '[ -z "$(ls -A "$OUT" | grep "^\.target")" ]'
+	end
+done

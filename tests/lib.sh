@@ -1,0 +1,58 @@
+# lib.sh - sourced by the test scripts: result lines, try/assert, helpers.
+# Each check prints "ok - WHAT" or "not ok - WHAT"; run.sh counts them.
+
+: "${PHYLLO:=./phyllo-export}" "${RUN:=}" "${TESTBIN:=build}"
+OUT=tests/out/$(basename "$0" .sh)
+rm -rf "$OUT" && mkdir -p "$OUT" || exit 1
+
+ok() { echo "ok - $*"; }
+notok() { echo "not ok - $*"; }
+skip() { echo "ok - # SKIP $*"; }
+
+# px ARGS: run phyllo-export, under valgrind when RUN says so.
+px() {
+	# shellcheck disable=SC2086
+	$RUN "$PHYLLO" "$@"
+}
+
+# try WHAT CMD...: run CMD keeping $rc, $OUT/stdout and $OUT/stderr;
+# the asserts that follow collect failures and "end" reports them.
+try() {
+	what=$1
+	shift
+	bad=
+	"$@" >"$OUT/stdout" 2>"$OUT/stderr"
+	rc=$?
+}
+assert() {
+	eval "$2" || bad="$bad; $1"
+}
+end() {
+	if [ -z "$bad" ]; then
+		ok "$what"
+	else
+		notok "$what:$bad (exit $rc; stderr: $(head -c 300 "$OUT/stderr"))"
+	fi
+}
+
+# csv_close A B [TOL]: same CSV, numbers equal within TOL, 1e-8 (our 9
+# digits print to 5e-9), relative
+# to max(1, |value|)); text fields must match exactly.
+csv_close() {
+	awk -F, -v tol="${3:-1e-8}" '
+	NR == FNR { a[FNR] = $0; na = FNR; next }
+	{
+		if (!(FNR in a)) { print "extra line " FNR; bad = 1; exit }
+		n = split(a[FNR], f, ",")
+		if (n != NF) { print "line " FNR ": " n " vs " NF " fields"; bad = 1; exit }
+		for (i = 1; i <= NF; i++) {
+			if (f[i] ~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/) {
+				d = f[i] - $i; if (d < 0) d = -d
+				m = $i < 0 ? -$i : $i; if (m < 1) m = 1
+				if (d > tol * m) { print "line " FNR " field " i ": " f[i] " vs " $i; bad = 1; exit }
+			} else if (f[i] != $i) { print "line " FNR " field " i ": " f[i] " vs " $i; bad = 1; exit }
+		}
+	}
+	END { if (!bad && FNR != na) { print "missing lines"; bad = 1 } exit bad }
+	' "$1" "$2"
+}

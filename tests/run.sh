@@ -1,0 +1,20 @@
+#!/bin/sh
+# run.sh - the whole suite: every script's "ok"/"not ok" lines, counted.
+# Ends with "N passed, N failed" and exits non-zero on any failure.
+
+: "${TESTBIN:=build}"
+mkdir -p tests/out
+log=tests/out/run.log
+{
+	$RUN "$TESTBIN/test_model"
+	for t in golden cli man; do
+		sh "tests/$t.sh"
+	done
+} 2>&1 | tee "$log" | grep -v '^ok - ' | grep -v '^ok - # SKIP'
+
+pass=$(grep -c '^ok - ' "$log")
+skip=$(grep -c '^ok - # SKIP' "$log")
+fail=$(grep -c '^not ok - ' "$log")
+pass=$((pass - skip))
+echo "$pass passed, $fail failed, $skip skipped"
+[ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]
