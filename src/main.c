@@ -163,7 +163,8 @@ main(int argc, char *argv[])
 		if (models[sc.model] == NULL)
 			scene_error(&sc, "model", "model \"%s\" is not "
 			    "implemented yet", scene_model_name(sc.model));
-		else if (models[sc.model](&sc, &res) == 0)
+		else if (models[sc.model](&sc, &res) == 0 &&
+		    organs_apply(&sc, &res) == 0)
 			write_result(&a, &sc, &res);
 	}
 	result_free(&res);

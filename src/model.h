@@ -10,6 +10,9 @@ typedef int model_fn(const struct scene *, struct result *res);
 
 model_fn planar_run;
 
+/* Apply the scene's organs entries to placed organs; 0 or -1. */
+int	organs_apply(const struct scene *, struct result *);
+
 /* The contact parastichy numbers seen from organ k, sorted; 0 if none. */
 void	parastichies(const struct result *, size_t k, int pair[2]);
 

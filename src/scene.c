@@ -26,6 +26,9 @@ enum type {
 	T_FLOAT,	/* double; integers are accepted */
 	T_IDENT,	/* char[NAME_LEN + 1], [A-Za-z][A-Za-z0-9_]* */
 	T_CHOICE,	/* int: index into the row's word list */
+	T_EXPR,		/* struct expr_setting: a number or an expression */
+	T_NAMES,	/* an identifier or an array of them (variants) */
+	T_WEIGHTS,	/* an array of numbers, one per variant */
 	T_RANGES	/* the organs list: struct organ_range entries */
 };
 
@@ -37,7 +40,6 @@ enum where {
 #define F_LO_OPEN	0x01	/* lo itself is not allowed */
 #define F_REQUIRED	0x02	/* every scene must give it */
 
-#define ALL_MODELS	0u
 #define PLANAR		(1u << MODEL_PLANAR)
 
 /* 360 (2 - tau), tau the golden ratio. */
@@ -54,6 +56,7 @@ struct row {
 	double		 def;		/* numbers and choices: default */
 	const char	*defstr;	/* as the man page says it */
 	const char	*words;		/* T_CHOICE: space-separated */
+	unsigned	 vars;		/* T_EXPR: the variables it may use */
 	const char	*doc;
 };
 
@@ -61,39 +64,68 @@ struct row {
 #define R(f)	offsetof(struct organ_range, f)
 
 static const struct row rows[] = {
-	{ "name", T_IDENT, IN_SCENE, ALL_MODELS, S(name), 0, 0, 0, 0,
-	  "the file name", NULL,
-	  "identifier naming the result: POV-Ray object, Blender collection" },
-	{ "model", T_CHOICE, IN_SCENE, ALL_MODELS, S(model), 0, 0,
-	  F_REQUIRED, 0, "none", "planar cylindrical collision",
-	  "which model places the organs" },
-	{ "divergence", T_FLOAT, IN_SCENE, ALL_MODELS, S(divergence),
-	  -360, 360, 0, GOLDEN_ANGLE, "137.507764", NULL,
-	  "divergence angle between consecutive organs, degrees" },
-	{ "count", T_INT, IN_SCENE, ALL_MODELS, S(count), 1, COUNT_MAX, 0,
-	  0, "none", NULL, "number of organs" },
-	{ "seed", T_INT, IN_SCENE, ALL_MODELS, S(seed), -HUGE_VAL,
-	  HUGE_VAL, 0, 0, "0", NULL, "seed of the random stream" },
-	{ "planar", T_GROUP, IN_SCENE, PLANAR, 0, 0, 0, 0, 0, NULL, NULL,
-	  "settings of the planar model" },
-	{ "planar.scale", T_FLOAT, IN_SCENE, PLANAR, S(planar.scale), 0,
-	  HUGE_VAL, F_LO_OPEN, 1, "1", NULL,
-	  "Vogel's c: organ n lies at radius c n^exponent" },
-	{ "planar.outer", T_FLOAT, IN_SCENE, PLANAR, S(planar.outer), 0,
-	  HUGE_VAL, F_LO_OPEN, 0, "none", NULL,
-	  "radius of the last organ; sets c instead of scale" },
-	{ "planar.inner", T_FLOAT, IN_SCENE, PLANAR, S(planar.inner), 0,
-	  HUGE_VAL, 0, 0, "0", NULL, "radius at which organ 0 sits" },
-	{ "planar.exponent", T_FLOAT, IN_SCENE, PLANAR, S(planar.exponent),
-	  0, 4, F_LO_OPEN, 0.5, "0.5", NULL,
-	  "exponent of n in the radius" },
-	{ "planar.dome", T_FLOAT, IN_SCENE, PLANAR, S(planar.dome),
-	  -HUGE_VAL, HUGE_VAL, 0, 0, "0", NULL,
-	  "height of the centre above the rim (paraboloid); < 0 a dish" },
-	{ "organs", T_RANGES, IN_SCENE, ALL_MODELS, 0, 0, 0, 0, 0, NULL,
-	  NULL, "list of organ entries" },
-	{ "organs.object", T_IDENT, IN_RANGE, ALL_MODELS, R(object), 0, 0,
-	  0, 0, "Organ", NULL, "organ object every organ is an instance of" },
+	{ .path = "name", .type = T_IDENT, .off = S(name),
+	  .defstr = "the file name",
+	  .doc = "identifier naming the result: POV-Ray object, Blender "
+	  "collection" },
+	{ .path = "model", .type = T_CHOICE, .off = S(model),
+	  .flags = F_REQUIRED, .defstr = "none",
+	  .words = "planar cylindrical collision",
+	  .doc = "which model places the organs" },
+	{ .path = "divergence", .type = T_FLOAT, .off = S(divergence),
+	  .lo = -360, .hi = 360, .def = GOLDEN_ANGLE, .defstr = "137.507764",
+	  .doc = "divergence angle between consecutive organs, degrees" },
+	{ .path = "count", .type = T_INT, .off = S(count), .lo = 1,
+	  .hi = COUNT_MAX, .defstr = "none", .doc = "number of organs" },
+	{ .path = "seed", .type = T_INT, .off = S(seed), .lo = -HUGE_VAL,
+	  .hi = HUGE_VAL, .defstr = "0",
+	  .doc = "seed of rand() and of the choice among variants" },
+	{ .path = "planar", .type = T_GROUP, .models = PLANAR,
+	  .doc = "settings of the planar model" },
+	{ .path = "planar.scale", .type = T_FLOAT, .models = PLANAR,
+	  .off = S(planar.scale), .lo = 0, .hi = HUGE_VAL,
+	  .flags = F_LO_OPEN, .def = 1, .defstr = "1",
+	  .doc = "Vogel's c: organ n lies at radius c n^exponent" },
+	{ .path = "planar.outer", .type = T_FLOAT, .models = PLANAR,
+	  .off = S(planar.outer), .lo = 0, .hi = HUGE_VAL,
+	  .flags = F_LO_OPEN, .defstr = "none",
+	  .doc = "radius of the last organ; sets c instead of scale" },
+	{ .path = "planar.inner", .type = T_FLOAT, .models = PLANAR,
+	  .off = S(planar.inner), .lo = 0, .hi = HUGE_VAL, .defstr = "0",
+	  .doc = "radius at which organ 0 sits" },
+	{ .path = "planar.exponent", .type = T_FLOAT, .models = PLANAR,
+	  .off = S(planar.exponent), .lo = 0, .hi = 4, .flags = F_LO_OPEN,
+	  .def = 0.5, .defstr = "0.5", .doc = "exponent of n in the radius" },
+	{ .path = "planar.dome", .type = T_FLOAT, .models = PLANAR,
+	  .off = S(planar.dome), .lo = -HUGE_VAL, .hi = HUGE_VAL,
+	  .defstr = "0",
+	  .doc = "height of the centre above the rim (paraboloid)" },
+	{ .path = "organs", .type = T_RANGES,
+	  .doc = "list of organ entries, each an index range" },
+	{ .path = "organs.from", .type = T_INT, .where = IN_RANGE,
+	  .off = R(from), .lo = 0, .hi = HUGE_VAL, .defstr = "0",
+	  .doc = "first organ of the entry" },
+	{ .path = "organs.to", .type = T_INT, .where = IN_RANGE,
+	  .off = R(to), .lo = -1, .hi = HUGE_VAL, .def = -1, .defstr = "-1",
+	  .doc = "last organ of the entry; -1 the last of all" },
+	{ .path = "organs.object", .type = T_NAMES, .where = IN_RANGE,
+	  .defstr = "Organ",
+	  .doc = "organ object, or an array of variants chosen at random" },
+	{ .path = "organs.weights", .type = T_WEIGHTS, .where = IN_RANGE,
+	  .lo = 0, .hi = HUGE_VAL, .defstr = "all 1",
+	  .doc = "relative frequency of each variant" },
+	{ .path = "organs.scale", .type = T_EXPR, .where = IN_RANGE,
+	  .off = R(scale), .vars = EXPR_ALL, .defstr = "r",
+	  .doc = "scale of the organ model" },
+	{ .path = "organs.altitude", .type = T_EXPR, .where = IN_RANGE,
+	  .off = R(altitude), .vars = EXPR_ALL, .defstr = "0",
+	  .doc = "offset along the surface normal w" },
+	{ .path = "organs.tilt", .type = T_EXPR, .where = IN_RANGE,
+	  .off = R(tilt), .vars = EXPR_ALL, .defstr = "0",
+	  .doc = "rotation about v lifting u towards w, degrees" },
+	{ .path = "organs.roll", .type = T_EXPR, .where = IN_RANGE,
+	  .off = R(roll), .vars = EXPR_ALL, .defstr = "0",
+	  .doc = "rotation about w, degrees" },
 };
 
 #define NROWS	(sizeof(rows) / sizeof(rows[0]))
@@ -289,6 +321,95 @@ set_choice(struct load *L, const config_setting_t *s, const struct row *r,
 	return -1;
 }
 
+/* A number, or a string holding an expression, compiled now. */
+static int
+set_expr(struct load *L, const config_setting_t *s, const struct row *r,
+    struct expr_setting *dst)
+{
+	struct expr_error err;
+	const char *src;
+
+	dst->line = line_of(s);
+	if (config_setting_is_number(s)) {
+		double v = config_setting_type(s) == CONFIG_TYPE_FLOAT ?
+		    config_setting_get_float(s) :
+		    (double)config_setting_get_int64(s);
+
+		dst->e = expr_constant(v);
+		return 0;
+	}
+	if ((src = config_setting_get_string(s)) == NULL) {
+		err_at(L, s, "%s must be a number or an expression string",
+		    r->path);
+		return -1;
+	}
+	if ((dst->e = expr_compile(src, r->vars, &err)) == NULL) {
+		diag(ST_SCENE, file_of(L, s), line_of(s), err.col, "%s: %s",
+		    r->path, err.msg);
+		return -1;
+	}
+	return 0;
+}
+
+/* One identifier, or an array of them: the entry's object variants. */
+static int
+set_names(struct load *L, const config_setting_t *s, const struct row *r,
+    struct organ_range *rg)
+{
+	int list = config_setting_type(s) == CONFIG_TYPE_ARRAY ||
+	    config_setting_type(s) == CONFIG_TYPE_LIST;
+	int n = list ? config_setting_length(s) : 1;
+
+	if (!list && config_setting_type(s) != CONFIG_TYPE_STRING) {
+		err_at(L, s, "%s must be a name or an array of names",
+		    r->path);
+		return -1;
+	}
+	if (n == 0 || n > VARIANTS_MAX) {
+		err_at(L, s, "%s must list 1 to %d names, not %d", r->path,
+		    VARIANTS_MAX, n);
+		return -1;
+	}
+	free(rg->names);
+	rg->names = xcalloc((size_t)n, sizeof(*rg->names));
+	rg->nnames = (size_t)n;
+	for (int i = 0; i < n; i++) {
+		const config_setting_t *e = list ?
+		    config_setting_get_elem(s, (unsigned)i) : s;
+
+		if (set_ident(L, e, r->path, rg->names[i]) < 0)
+			return -1;
+	}
+	return 0;
+}
+
+static int
+set_weights(struct load *L, const config_setting_t *s, const struct row *r,
+    struct organ_range *rg)
+{
+	int n = config_setting_length(s);
+
+	if (config_setting_type(s) != CONFIG_TYPE_ARRAY &&
+	    config_setting_type(s) != CONFIG_TYPE_LIST) {
+		err_at(L, s, "%s must be an array of numbers: [1, 2]",
+		    r->path);
+		return -1;
+	}
+	if (n > VARIANTS_MAX) {
+		err_at(L, s, "%s lists more than %d numbers", r->path,
+		    VARIANTS_MAX);
+		return -1;
+	}
+	rg->weights = xcalloc((size_t)n, sizeof(*rg->weights));
+	rg->nweights = (size_t)n;
+	rg->weights_line = line_of(s);
+	for (int i = 0; i < n; i++)
+		if (set_number(L, config_setting_get_elem(s, (unsigned)i), r,
+		    &rg->weights[i]) < 0)
+			return -1;
+	return 0;
+}
+
 static int	load_group(struct load *, const config_setting_t *,
 		    const char *prefix, void *base, enum where);
 
@@ -303,9 +424,8 @@ load_ranges(struct load *L, const config_setting_t *s)
 		    "organs = ( { object = \"Seed\"; } );");
 		return -1;
 	}
-	if (n > 1) {
-		err_at(L, s, "organs takes one entry (index ranges are not "
-		    "supported yet)");
+	if (n > RANGES_MAX) {
+		err_at(L, s, "organs has more than %d entries", RANGES_MAX);
 		return -1;
 	}
 	sc->ranges = xcalloc((size_t)n, sizeof(*sc->ranges));
@@ -315,14 +435,19 @@ load_ranges(struct load *L, const config_setting_t *s)
 
 		if (!config_setting_is_group(e)) {
 			err_at(L, e, "organs entry %d must be a group "
-			    "{ object = \"Seed\"; }", i + 1);
+			    "{ object = \"Seed\"; ... }", i + 1);
 			return -1;
 		}
-		strcpy(rg->object, "Organ");
 		rg->line = line_of(e);
+		rg->to = -1;
 		sc->nranges++;
 		if (load_group(L, e, "organs", rg, IN_RANGE) < 0)
 			return -1;
+		if (rg->names == NULL) {
+			rg->names = xcalloc(1, sizeof(*rg->names));
+			strcpy(rg->names[0], "Organ");
+			rg->nnames = 1;
+		}
 	}
 	return 0;
 }
@@ -363,6 +488,12 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 		return set_ident(L, s, path, dst);
 	case T_CHOICE:
 		return set_choice(L, s, r, dst);
+	case T_EXPR:
+		return set_expr(L, s, r, dst);
+	case T_NAMES:
+		return set_names(L, s, r, base);
+	case T_WEIGHTS:
+		return set_weights(L, s, r, base);
 	case T_RANGES:
 		return load_ranges(L, s);
 	}
@@ -433,21 +564,30 @@ name_from_file(char *dst, const char *file)
 	dst[len] = '\0';
 }
 
-/* Collect the distinct organ object names the ranges use. */
+/* Collect the distinct organ object names and number the variants. */
 static void
 collect_objects(struct scene *sc)
 {
 	static const char *const fallback = "Organ";
+	size_t total = 0;
 
-	sc->objects = xcalloc(sc->nranges + 1, sizeof(*sc->objects));
+	for (size_t i = 0; i < sc->nranges; i++)
+		total += sc->ranges[i].nnames;
+	sc->objects = xcalloc(total + 1, sizeof(*sc->objects));
 	for (size_t i = 0; i < sc->nranges; i++) {
-		size_t j;
+		struct organ_range *rg = &sc->ranges[i];
 
-		for (j = 0; j < sc->nobjects; j++)
-			if (strcmp(sc->objects[j], sc->ranges[i].object) == 0)
-				break;
-		if (j == sc->nobjects)
-			sc->objects[sc->nobjects++] = sc->ranges[i].object;
+		rg->ids = xcalloc(rg->nnames, sizeof(*rg->ids));
+		for (size_t k = 0; k < rg->nnames; k++) {
+			size_t j;
+
+			for (j = 0; j < sc->nobjects; j++)
+				if (strcmp(sc->objects[j], rg->names[k]) == 0)
+					break;
+			if (j == sc->nobjects)
+				sc->objects[sc->nobjects++] = rg->names[k];
+			rg->ids[k] = (unsigned)j;
+		}
 	}
 	if (sc->nobjects == 0)
 		sc->objects[sc->nobjects++] = fallback;
@@ -555,6 +695,17 @@ scene_load(struct scene *sc, const char *path)
 void
 scene_free(struct scene *sc)
 {
+	for (size_t i = 0; i < sc->nranges; i++) {
+		struct organ_range *rg = &sc->ranges[i];
+
+		free(rg->names);
+		free(rg->ids);
+		free(rg->weights);
+		expr_free(rg->scale.e);
+		expr_free(rg->altitude.e);
+		expr_free(rg->tilt.e);
+		expr_free(rg->roll.e);
+	}
 	free(sc->ranges);
 	free(sc->objects);
 	free(sc->given);
@@ -600,7 +751,8 @@ void
 scene_settings_list(FILE *fp)
 {
 	static const char *const tn[] = {
-		"group", "integer", "number", "identifier", "string", "list"
+		"group", "integer", "number", "identifier", "string",
+		"expression", "names", "numbers", "list"
 	};
 
 	for (size_t i = 0; i < NROWS; i++)

@@ -4,6 +4,8 @@
 
 #include <stdio.h>
 
+#include "expr.h"
+
 #define NAME_LEN	32		/* longest name or organ object name */
 #define COUNT_MAX	10000000	/* most organs a scene may ask for */
 #define SCENE_BYTES_MAX	(16L * 1024 * 1024)
@@ -23,9 +25,26 @@ struct planar_params {
 	double	 dome;		/* height of the centre above the rim */
 };
 
+/* A number or expression setting, and where it was given. */
+struct expr_setting {
+	struct expr	*e;		/* NULL: not given */
+	int		 line;
+};
+
+#define VARIANTS_MAX	256		/* objects in one organs entry */
+#define RANGES_MAX	1024		/* entries in organs */
+
+/* One entry of organs = ( ... ): an index range and what its organs are. */
 struct organ_range {
-	char	 object[NAME_LEN + 1];
-	int	 line;
+	int		 line;
+	long long	 from, to;	/* inclusive; to = -1: the last */
+	char		(*names)[NAME_LEN + 1];	/* object variants, owned */
+	size_t		 nnames;
+	unsigned	*ids;		/* names as indices into objects */
+	double		*weights;	/* one per name, or NULL */
+	size_t		 nweights;
+	int		 weights_line;
+	struct expr_setting scale, altitude, tilt, roll;
 };
 
 struct scene {

@@ -22,6 +22,9 @@ best() {
 N=1000000
 printf 'model = "planar";\ncount = %d;\nplanar = { scale = 0.01; dome = 0.2; };\n' $N >"$OUT/planar.cfg"
 
+echo "== expressions"
+"$TESTBIN/bench_expr"
+
 echo "== number formatting"
 "$TESTBIN/bench_numfmt"
 

@@ -7,7 +7,8 @@ mkdir -p tests/out
 log=tests/out/run.log
 {
 	$RUN "$TESTBIN/test_model"
-	for t in golden cli man; do
+	$RUN "$TESTBIN/test_expr"
+	for t in golden cli scenes man; do
 		sh "tests/$t.sh"
 	done
 } 2>&1 | tee "$log" | grep -v '^ok - ' | grep -v '^ok - # SKIP'

@@ -1,0 +1,46 @@
+#!/bin/sh
+# scenes.sh - every example scene exports, and the organ vocabulary
+# scenes give each index range its objects.
+. tests/lib.sh
+
+for cfg in scenes/*.cfg; do
+	try "scene $cfg exports to CSV" px --csv "$cfg"
+	assert "exit 0" '[ $rc -eq 0 ]'
+	assert "stderr empty" '[ ! -s $OUT/stderr ]'
+	assert "one line per organ" '[ $(($(wc -l <$OUT/stdout) - 1)) -eq $(px --info "$cfg" | sed -n "s/^count: //p") ]'
+	end
+done
+
+# objects CSV FROM TO NAME...: organs FROM..TO are all among NAMES.
+objects() {
+	awk -F, -v from="$2" -v to="$3" -v names="$4" '
+	BEGIN { n = split(names, a, " "); for (i = 1; i <= n; i++) ok[a[i]] = 1 }
+	NR > 1 && $1 >= from && $1 <= to && !($2 in ok) { print "organ " $1 " is " $2; bad = 1; exit }
+	END { exit bad }' "$1"
+}
+
+px --csv scenes/sunflower.cfg >"$OUT/sun.csv"
+try "sunflower: ABOP's ranges get seeds, florets and four petals" true
+assert "0-440 Seed" 'objects $OUT/sun.csv 0 440 Seed'
+assert "441-565 Floret" 'objects $OUT/sun.csv 441 565 Floret'
+assert "566-580 PetalA" 'objects $OUT/sun.csv 566 580 PetalA'
+assert "581-595 PetalB" 'objects $OUT/sun.csv 581 595 PetalB'
+assert "596-610 PetalC" 'objects $OUT/sun.csv 596 610 PetalC'
+assert "611-629 PetalD" 'objects $OUT/sun.csv 611 629 PetalD'
+end
+
+px --csv scenes/daisy.cfg >"$OUT/daisy.csv"
+try "daisy: lowered disc florets, three ray variants" true
+assert "0-379 DiscFloret" 'objects $OUT/daisy.csv 0 379 DiscFloret'
+assert "380-419 rays" 'objects $OUT/daisy.csv 380 419 "RayA RayB RayC"'
+assert "all three rays appear" '[ $(awk -F, "NR > 1 && \$1 >= 380 { print \$2 }" $OUT/daisy.csv | sort -u | wc -l) -eq 3 ]'
+assert "the centre lies below floret 100" 'awk -F, "NR == 2 { z0 = \$5 } NR == 102 { exit !(z0 < \$5) }" $OUT/daisy.csv'
+end
+
+px --csv scenes/zinnia.cfg >"$OUT/zinnia.csv"
+try "zinnia: petals sink, grow and flatten with n" true
+assert "0-139 Floret" 'objects $OUT/zinnia.csv 0 139 Floret'
+assert "140-259 Petal" 'objects $OUT/zinnia.csv 140 259 Petal'
+assert "scale grows" 'awk -F, "NR > 1 && \$1 >= 141 && \$15 <= prev { exit 1 } NR > 1 && \$1 >= 140 { prev = \$15 }" $OUT/zinnia.csv'
+assert "u flattens: its z falls" 'awk -F, "NR > 1 && \$1 >= 141 && \$8 >= prev { exit 1 } NR > 1 && \$1 >= 140 { prev = \$8 }" $OUT/zinnia.csv'
+end
