@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "diag.h"
 #include "model.h"
@@ -17,11 +18,18 @@
 #ifndef VERSION
 #define VERSION "0.0"
 #endif
+#ifndef SHAREDIR
+#define SHAREDIR "/usr/local/share/phyllo-export"
+#endif
 
 const struct writer writers[] = {
-	{ "csv", csv_write, "one line per organ: position, frame, scale" },
-	{ "info", info_write, "key: value facts about the result" },
-	{ NULL, NULL, NULL }
+	{ "pov", NULL, "pov.tmpl", pov_vars, pov_check,
+	  "a POV-Ray include file declaring the structure" },
+	{ "csv", csv_write, NULL, NULL, NULL,
+	  "one line per organ: position, frame, scale" },
+	{ "info", info_write, NULL, NULL, NULL,
+	  "key: value facts about the result" },
+	{ NULL, NULL, NULL, NULL, NULL, NULL }
 };
 
 static model_fn *const models[MODEL__MAX] = {
@@ -32,6 +40,8 @@ struct args {
 	const struct writer *writer;
 	const char	*output;	/* -o, or NULL for stdout */
 	const char	*scene;
+	const char	*template;	/* --template, or NULL */
+	int		 arrays;	/* --arrays */
 };
 
 static void
@@ -40,7 +50,8 @@ usage(FILE *fp)
 	fputs("usage: phyllo-export (", fp);
 	for (const struct writer *w = writers; w->name != NULL; w++)
 		fprintf(fp, "%s--%s", w == writers ? "" : " | ", w->name);
-	fputs(") [-o FILE] SCENE.cfg\n"
+	fputs(") [-o FILE]\n"
+	    "                     [--template FILE] [--arrays] SCENE.cfg\n"
 	    "       phyllo-export --help | --version\n", fp);
 }
 
@@ -54,6 +65,10 @@ help(void)
 		printf("  --%-12s%s\n", w->name, w->help);
 	puts("\n  -o FILE        write FILE (replaced only on success) "
 	    "instead of standard output\n"
+	    "  --template FILE  write --pov through this template instead "
+	    "of the default\n"
+	    "  --arrays       --pov: declare the organs as arrays "
+	    "(pov-arrays.tmpl)\n"
 	    "  -h, --help     show this help\n"
 	    "  -V, --version  show the version\n\n"
 	    "Models: planar.  See phyllo-export(1) and phyllo-export(5).");
@@ -72,6 +87,9 @@ parse_args(int argc, char *argv[], struct args *a)
 		    OPT_WRITER + n };
 	longopts[n++] = (struct option){ "output", required_argument, NULL,
 	    'o' };
+	longopts[n++] = (struct option){ "template", required_argument, NULL,
+	    't' };
+	longopts[n++] = (struct option){ "arrays", no_argument, NULL, 'a' };
 	longopts[n++] = (struct option){ "help", no_argument, NULL, 'h' };
 	longopts[n++] = (struct option){ "version", no_argument, NULL, 'V' };
 	longopts[n] = (struct option){ NULL, 0, NULL, 0 };
@@ -87,6 +105,12 @@ parse_args(int argc, char *argv[], struct args *a)
 			return -1;
 		case 'o':
 			a->output = optarg;
+			break;
+		case 't':
+			a->template = optarg;
+			break;
+		case 'a':
+			a->arrays = 1;
 			break;
 		case ':':
 			diag(ST_USAGE, NULL, 0, 0, "option %s needs an argument",
@@ -117,14 +141,39 @@ parse_args(int argc, char *argv[], struct args *a)
 		usage(stderr);
 		return ST_USAGE;
 	}
+	if ((a->template != NULL || a->arrays) && a->writer->tmpl == NULL) {
+		diag(ST_USAGE, NULL, 0, 0, "--%s has no template; --template "
+		    "and --arrays go with --pov", a->writer->name);
+		return ST_USAGE;
+	}
+	if (a->template != NULL && a->arrays) {
+		diag(ST_USAGE, NULL, 0, 0, "choose one of --template and "
+		    "--arrays");
+		return ST_USAGE;
+	}
 	a->scene = argv[optind];
 	return 0;
 }
 
+/* The format's template: --template FILE, installed, or built in. */
+static struct tmpl *
+load_template(const struct args *a)
+{
+	const char *name = a->arrays ? "pov-arrays.tmpl" : a->writer->tmpl;
+	char path[4096];
+
+	if (a->template != NULL)
+		return tmpl_load(a->template, a->writer->vars);
+	snprintf(path, sizeof(path), "%s/%s", SHAREDIR, name);
+	if (access(path, R_OK) == 0)
+		return tmpl_load(path, a->writer->vars);
+	return tmpl_builtin(name, a->writer->vars);
+}
+
 /* Write the result; on any failure -o's target is left as it was. */
 static void
-write_result(const struct args *a, const struct scene *sc,
-    const struct result *res)
+write_result(const struct args *a, const struct tmpl *t,
+    const struct scene *sc, const struct result *res)
 {
 	struct sink s;
 	FILE *fp = output_open(a->output);
@@ -132,7 +181,10 @@ write_result(const struct args *a, const struct scene *sc,
 	if (fp == NULL)
 		return;
 	sink_init(&s, fp);
-	a->writer->write(&s, sc, res);
+	if (t != NULL)
+		tmpl_write(t, &s, sc, res);
+	else
+		a->writer->write(&s, sc, res);
 	if (sink_finish(&s) != 0) {
 		diag(ST_SYSTEM, a->output ? a->output : "<stdout>", 0, 0,
 		    "%s", strerror(errno));
@@ -142,11 +194,33 @@ write_result(const struct args *a, const struct scene *sc,
 	sink_free(&s);
 }
 
+/* Everything that can fail on the input, before any output. */
+static int
+prepare(const struct args *a, struct scene *sc, struct tmpl **t,
+    struct result *res)
+{
+	if (scene_load(sc, a->scene) != 0)
+		return -1;
+	if (a->writer->check != NULL && a->writer->check(sc) != 0)
+		return -1;
+	if (a->writer->tmpl != NULL && (*t = load_template(a)) == NULL)
+		return -1;
+	if (models[sc->model] == NULL) {
+		scene_error(sc, "model", "model \"%s\" is not implemented yet",
+		    scene_model_name(sc->model));
+		return -1;
+	}
+	if (models[sc->model](sc, res) != 0)
+		return -1;
+	return organs_apply(sc, res);
+}
+
 int
 main(int argc, char *argv[])
 {
-	struct args a = { NULL, NULL, NULL };
+	struct args a = { NULL, NULL, NULL, NULL, 0 };
 	struct scene sc;
+	struct tmpl *t = NULL;
 	struct result res = { 0 };
 	int st;
 
@@ -159,14 +233,9 @@ main(int argc, char *argv[])
 	}
 	if (st > 0)
 		return st;
-	if (scene_load(&sc, a.scene) == 0) {
-		if (models[sc.model] == NULL)
-			scene_error(&sc, "model", "model \"%s\" is not "
-			    "implemented yet", scene_model_name(sc.model));
-		else if (models[sc.model](&sc, &res) == 0 &&
-		    organs_apply(&sc, &res) == 0)
-			write_result(&a, &sc, &res);
-	}
+	if (prepare(&a, &sc, &t, &res) == 0)
+		write_result(&a, t, &sc, &res);
+	tmpl_free(t);
 	result_free(&res);
 	scene_free(&sc);
 	return diag_status();

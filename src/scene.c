@@ -540,7 +540,11 @@ set_defaults(struct scene *sc)
 	}
 }
 
-/* The default name: the file's base name made into an identifier. */
+/*
+ * The default name: the file's base name made into an identifier and
+ * capitalised, because every POV-Ray keyword is lowercase ("cone.cfg"
+ * must not declare "cone").
+ */
 static void
 name_from_file(char *dst, const char *file)
 {
@@ -552,8 +556,8 @@ name_from_file(char *dst, const char *file)
 	if (len > NAME_LEN)
 		len = NAME_LEN;
 	if (len == 0 || !isalpha((unsigned char)base[0]) ||
-	    (base[0] & 0x80) || strcmp(file, "-") == 0) {
-		strcpy(dst, "phyllotaxis");
+	    (base[0] & 0x80) || strcmp(file, "<stdin>") == 0) {
+		strcpy(dst, "Phyllotaxis");
 		return;
 	}
 	for (size_t i = 0; i < len; i++) {
@@ -561,6 +565,7 @@ name_from_file(char *dst, const char *file)
 
 		dst[i] = (char)(isalnum(c) && !(c & 0x80) ? c : '_');
 	}
+	dst[0] = (char)toupper((unsigned char)dst[0]);
 	dst[len] = '\0';
 }
 

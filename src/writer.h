@@ -5,14 +5,22 @@
 #include "organ.h"
 #include "scene.h"
 #include "sink.h"
+#include "template.h"
 
 /* Writers only read; errors in the sink are reported by the caller. */
 typedef void writer_fn(struct sink *, const struct scene *,
     const struct result *);
 
+/*
+ * A format writes either through its own function, or from a template
+ * with its own placeholders; check() refuses names it cannot carry.
+ */
 struct writer {
 	const char	*name;	/* its option, without the dashes */
 	writer_fn	*write;
+	const char	*tmpl;	/* default template in templates/ */
+	const struct tmpl_var *vars;
+	int		(*check)(const struct scene *);
 	const char	*help;
 };
 
@@ -20,5 +28,8 @@ extern const struct writer writers[];
 
 writer_fn csv_write;
 writer_fn info_write;
+
+extern const struct tmpl_var pov_vars[];
+int	pov_check(const struct scene *);
 
 #endif

@@ -37,3 +37,36 @@ echo "$model $csv $bytes $N" | awk '{
 	printf "model + CSV (--csv):  %.3f s  = %.2f M organs/s, %.0f MB/s (%d bytes)\n", $2, $4 / $2 / 1e6, $3 / $2 / 1e6, $3
 	printf "CSV writing share:    %.0f%%\n", 100 * ($2 - $1) / $2
 }'
+
+echo "== POV-Ray include, $N organs"
+pov=$(best "$PHYLLO" --pov -o /dev/null "$OUT/planar.cfg")
+echo "$pov $N" | awk '{ printf "model + include:      %.3f s  = %.2f M organs/s\n", $1, $2 / $1 / 1e6 }'
+
+if [ -n "${POVRAY:-}" ]; then
+	# POV-Ray parsing 100,000 organs from our include, against its own
+	# #while loop placing the same Vogel pattern with the same matrices.
+	M=100000
+	printf 'name = "Head";\nmodel = "planar";\ncount = %d;\nplanar = { scale = 0.01; };\norgans = ( { object = "Seed"; scale = 0.005; } );\n' $M >"$OUT/head.cfg"
+	"$PHYLLO" --pov -o "$OUT/head.inc" "$OUT/head.cfg"
+	printf '#version 3.7;\ncamera { location <0, 5, -0.001> look_at 0 }\n#declare Seed = sphere { 0, 1 }\n#include "head.inc"\nobject { Head }\n' >"$OUT/inc.pov"
+	{
+		printf '#version 3.7;\ncamera { location <0, 5, -0.001> look_at 0 }\n#declare Seed = sphere { 0, 1 }\n'
+		printf '#declare A = radians(137.50776405003785);\n#declare Head = union {\n#declare I = 0;\n#while (I < %d)\n' $M
+		printf '  #declare R = 0.01 * sqrt(I);\n  #declare C = cos(I * A);\n  #declare S = sin(I * A);\n'
+		printf '  object { Seed matrix <C * 0.005, 0, S * 0.005,  0, 0.005, 0,  -S * 0.005, 0, C * 0.005,  R * C, 0, R * S> }\n'
+		printf '  #declare I = I + 1;\n#end\n}\nobject { Head }\n'
+	} >"$OUT/loop.pov"
+	# Parse and a 1-pixel render: the parse is what differs.
+	parse() { (cd "$OUT" && "$POVRAY" -D -GA +W1 +H1 +I"$1" +O/dev/null 2>/dev/null); }
+	tinc=$(best parse inc.pov)
+	tloop=$(best parse loop.pov)
+	mem=0
+	if [ -x /usr/bin/time ]; then
+		(cd "$OUT" && /usr/bin/time -f %M -o mem "$POVRAY" -D -GA +W1 +H1 +Iinc.pov +O/dev/null 2>/dev/null)
+		mem=$(tail -1 "$OUT/mem")
+	fi
+	echo "$tinc $tloop $mem $(wc -c <"$OUT/head.inc") $M" | awk '{
+		printf "POV-Ray, %d organs: our include %.2f s, SDL #while loop %.2f s, ratio %.2fx (loop / include)\n", $5, $1, $2, $2 / $1
+		printf "POV-Ray peak memory with the include: %.0f MB; include size %.1f MB\n", $3 / 1024, $4 / 1e6
+	}'
+fi

@@ -15,7 +15,9 @@ assert "stderr empty" '[ ! -s $OUT/stderr ]'
 end
 
 try "--help lists only formats that work" px --help
-for f in $(grep -o -- '^  --[a-z]*' "$OUT/stdout" | sed 's/^  --//'); do
+formats() { awk '/one format:/ { on = 1; getline; next } on && /^$/ { exit } on' "$OUT/stdout" | grep -o -- '^  --[a-z]*' | sed 's/^  --//'; }
+assert "lists formats" '[ -n "$(formats)" ]'
+for f in $(formats); do
 	px "--$f" "$GOOD" >/dev/null 2>&1 || bad="$bad; --$f fails"
 done
 end
@@ -46,6 +48,38 @@ assert "exit 2" '[ $rc -eq 2 ]'
 assert "says so" 'grep -q "option -o needs an argument" $OUT/stderr'
 end
 
+try "--template goes with --pov only" px --csv --template templates/pov.tmpl "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+assert "says so" 'grep -q "^phyllo-export: --csv has no template" $OUT/stderr'
+end
+
+try "--template and --arrays exclude each other" px --pov --arrays --template templates/pov.tmpl "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+end
+
+try "a missing template is an error naming it" px --pov --template tests/no-such.tmpl "$GOOD"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qx "phyllo-export: tests/no-such.tmpl: cannot read template: No such file or directory" $OUT/stderr'
+assert "stdout empty" '[ ! -s $OUT/stdout ]'
+end
+
+printf '// a\0b @NAME@\n' >"$OUT/nul.tmpl"
+try "a template with a NUL byte is an error" px --pov --template "$OUT/nul.tmpl" "$GOOD"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -q "NUL byte in template" $OUT/stderr'
+end
+
+try "the default template is the installed or built-in templates/pov.tmpl" px --pov "$GOOD"
+px --pov --template templates/pov.tmpl "$GOOD" >"$OUT/explicit.inc"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "same output" 'cmp -s $OUT/stdout $OUT/explicit.inc'
+end
+
+try "in a template @@ writes one @, other @s stay" sh -c 'printf "a@@b c@d @e@ @NAME@@@\n" >"$0/at.tmpl" && "$1" --pov --template "$0/at.tmpl" "$2"' "$OUT" "$PHYLLO" "$GOOD"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "text" '[ "$(cat $OUT/stdout)" = "a@b c@d @e@ Vogel90@" ]'
+end
+
 try "no scene file is a usage error" px --csv
 assert "exit 2" '[ $rc -eq 2 ]'
 end
@@ -67,12 +101,22 @@ assert "message" 'grep -q "^phyllo-export: <stdin>:2: count -1 is out of range" 
 end
 
 try "the default name comes from the file name" px --info tests/golden/rings.cfg
-assert "name: rings" 'grep -q "^name: rings$" $OUT/stdout'
+assert "name: Rings" 'grep -q "^name: Rings$" $OUT/stdout'
+end
+
+cp "$GOOD" "$OUT/cone.cfg"
+try "a file named like a POV-Ray keyword gives a capitalised name" px --pov "$OUT/cone.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "declares Cone" 'grep -q "^#declare Cone = union" $OUT/stdout'
+end
+
+try "a scene from standard input is named Phyllotaxis" sh -c '"$0" --info - <"$1"' "$PHYLLO" "$GOOD"
+assert "name: Phyllotaxis" 'grep -q "^name: Phyllotaxis$" $OUT/stdout'
 end
 
 cp "$GOOD" "$OUT/my-head.v2.cfg"
 try "a file name that is no identifier still gives one" px --info "$OUT/my-head.v2.cfg"
-assert "name: my_head" 'grep -q "^name: my_head$" $OUT/stdout'
+assert "name: My_head" 'grep -q "^name: My_head$" $OUT/stdout'
 end
 
 try "-o writes the file and nothing to stdout" px --csv -o "$OUT/a.csv" "$GOOD"

@@ -1,7 +1,9 @@
 #!/bin/sh
 # golden.sh - tests/golden/NAME.cfg against NAME.csv (numbers compared
 # to 1e-8) and NAME.info (exact); tests/bad/NAME.cfg against NAME.err
-# (exact), with exit 1, nothing on stdout, and -o's target untouched.
+# (exact), with exit 1, nothing on stdout, and -o's target untouched;
+# tests/bad-pov/NAME.cfg and NAME.tmpl the same with --pov (the latter
+# as --template for a good scene).
 . tests/lib.sh
 
 for cfg in tests/golden/*.cfg; do
@@ -32,5 +34,21 @@ for cfg in tests/bad/*.cfg; do
 	assert "message as in $base.err" 'diff -u "$base.err" "$OUT/stderr" >"$OUT/diff"'
 	assert "-o target untouched" '[ "$(cat "$OUT/target")" = precious ]'
 	assert "no temporary file left" '[ -z "$(ls -A "$OUT" | grep "^\.target")" ]'
+	end
+done
+
+for f in tests/bad-pov/*.cfg tests/bad-pov/*.tmpl; do
+	base=${f%.*}
+	name=$(basename "$f")
+	case $f in
+	*.tmpl) set -- --pov --template "$f" tests/golden/vogel90.cfg ;;
+	*) set -- --pov "$f" ;;
+	esac
+	printf 'precious\n' >"$OUT/target"
+	try "bad --pov $name" px -o "$OUT/target" "$@"
+	assert "exit 1" '[ $rc -eq 1 ]'
+	assert "nothing on stdout" '[ ! -s $OUT/stdout ]'
+	assert "message as in $base.err" 'diff -u "$base.err" "$OUT/stderr" >"$OUT/diff"'
+	assert "-o target untouched" '[ "$(cat "$OUT/target")" = precious ]'
 	end
 done

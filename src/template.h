@@ -1,0 +1,56 @@
+/* template.h - output written from user-editable templates with @PLACEHOLDERS@. */
+#ifndef TEMPLATE_H
+#define TEMPLATE_H
+
+#include <stddef.h>
+
+#include "organ.h"
+#include "scene.h"
+#include "sink.h"
+
+#define TMPL_BYTES_MAX	(1024 * 1024)
+
+/* Where a placeholder may stand; a mask of these. */
+#define TS_GLOBAL	0x1	/* anywhere */
+#define TS_OBJECT	0x2	/* inside @@objects: once per organ object */
+#define TS_ORGAN	0x4	/* inside @@organs: once per organ */
+
+struct tmpl_ctx {
+	const struct scene	*sc;
+	const struct result	*r;
+	int			 scope;		/* TS_* being written */
+	size_t			 object;	/* in TS_OBJECT */
+	size_t			 organ;		/* in TS_ORGAN */
+};
+
+typedef void tmpl_put_fn(struct sink *, const struct tmpl_ctx *);
+
+/* A placeholder: its name without the @s, where it may stand, its value. */
+struct tmpl_var {
+	const char	*name;
+	int		 scopes;
+	tmpl_put_fn	*put;
+};
+
+struct tmpl;
+
+struct tmpl	*tmpl_load(const char *path, const struct tmpl_var *extra);
+struct tmpl	*tmpl_builtin(const char *name, const struct tmpl_var *extra);
+struct tmpl	*tmpl_parse(const char *file, const char *text, size_t len,
+		    const struct tmpl_var *extra);
+void		 tmpl_write(const struct tmpl *, struct sink *,
+		    const struct scene *, const struct result *);
+void		 tmpl_free(struct tmpl *);
+
+/* Helpers for writers' placeholders. */
+const struct organ *tmpl_organ(const struct tmpl_ctx *);
+
+/* The templates compiled into the program (build/builtin.c). */
+struct builtin_template {
+	const char		*name;
+	const unsigned char	*text;
+	size_t			 len;
+};
+extern const struct builtin_template builtin_templates[];
+
+#endif
