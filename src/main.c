@@ -34,6 +34,7 @@ const struct writer writers[] = {
 
 static model_fn *const models[MODEL__MAX] = {
 	[MODEL_PLANAR] = planar_run,
+	[MODEL_CYLINDRICAL] = cylindrical_run,
 };
 
 struct args {
@@ -71,7 +72,7 @@ help(void)
 	    "(pov-arrays.tmpl)\n"
 	    "  -h, --help     show this help\n"
 	    "  -V, --version  show the version\n\n"
-	    "Models: planar.  See phyllo-export(1) and phyllo-export(5).");
+	    "Models: planar, cylindrical.  See phyllo-export(1) and phyllo-export(5).");
 }
 
 /* 0 to go on, -1 to exit 0 at once (--help), or a status to exit with. */

@@ -9,6 +9,7 @@
 typedef int model_fn(const struct scene *, struct result *res);
 
 model_fn planar_run;
+model_fn cylindrical_run;
 
 /* Apply the scene's organs entries to placed organs; 0 or -1. */
 int	organs_apply(const struct scene *, struct result *);

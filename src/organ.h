@@ -34,6 +34,7 @@ struct info_item {
 struct result {
 	struct organ	*organs;	/* owned */
 	size_t		 count;
+	double		 divergence;	/* as used, degrees */
 	const char	*const *objects; /* borrowed from the scene */
 	size_t		 nobjects;
 	struct info_item info[INFO_MAX];

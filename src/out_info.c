@@ -28,7 +28,7 @@ info_write(struct sink *s, const struct scene *sc, const struct result *r)
 	sink_puts(s, sc->name);
 	sink_putc(s, '\n');
 	line(s, "count", 1, &count);
-	line(s, "divergence", 1, &sc->divergence);
+	line(s, "divergence", 1, &r->divergence);
 	for (size_t i = 0; i < r->count; i++)
 		for (int j = 0; j < 3; j++) {
 			box[j] = fmin(box[j], r->organs[i].pos[j]);

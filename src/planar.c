@@ -55,6 +55,7 @@ planar_run(const struct scene *sc, struct result *res)
 	kdome = rim > 0 ? 2 * p->dome / (rim * rim) : 0;
 
 	result_init(res, count);
+	res->divergence = sc->divergence;
 	res->objects = sc->objects;
 	res->nobjects = sc->nobjects;
 	for (size_t n = 0; n < count; n++) {

@@ -29,6 +29,7 @@ enum type {
 	T_EXPR,		/* struct expr_setting: a number or an expression */
 	T_NAMES,	/* an identifier or an array of them (variants) */
 	T_WEIGHTS,	/* an array of numbers, one per variant */
+	T_INTS,		/* an array of 2 or 3 positive integers */
 	T_RANGES	/* the organs list: struct organ_range entries */
 };
 
@@ -41,6 +42,7 @@ enum where {
 #define F_REQUIRED	0x02	/* every scene must give it */
 
 #define PLANAR		(1u << MODEL_PLANAR)
+#define CYL		(1u << MODEL_CYLINDRICAL)
 
 /* 360 (2 - tau), tau the golden ratio. */
 #define GOLDEN_ANGLE	137.50776405003785
@@ -100,6 +102,22 @@ static const struct row rows[] = {
 	  .off = S(planar.dome), .lo = -HUGE_VAL, .hi = HUGE_VAL,
 	  .defstr = "0",
 	  .doc = "height of the centre above the rim (paraboloid)" },
+	{ .path = "cylindrical", .type = T_GROUP, .models = CYL,
+	  .doc = "settings of the cylindrical model" },
+	{ .path = "cylindrical.radius", .type = T_EXPR, .models = CYL,
+	  .off = S(cyl.radius), .defstr = "1",
+	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .doc = "radius of the cylinder; an expression of t tapers it" },
+	{ .path = "cylindrical.parastichies", .type = T_INTS, .models = CYL,
+	  .off = S(cyl.parastichies), .lo = 1, .hi = 1000, .defstr = "none",
+	  .doc = "contact parastichy pair [m, n] or triple [m, n, m+n]" },
+	{ .path = "cylindrical.rise", .type = T_FLOAT, .models = CYL,
+	  .off = S(cyl.rise), .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN,
+	  .defstr = "none",
+	  .doc = "height between consecutive organs, for radius 1" },
+	{ .path = "cylindrical.length", .type = T_FLOAT, .models = CYL,
+	  .off = S(cyl.length), .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN,
+	  .defstr = "none", .doc = "length of the structure instead of count" },
 	{ .path = "organs", .type = T_RANGES,
 	  .doc = "list of organ entries, each an index range" },
 	{ .path = "organs.from", .type = T_INT, .where = IN_RANGE,
@@ -263,10 +281,12 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 	if (type != CONFIG_TYPE_INT && type != CONFIG_TYPE_INT64 &&
 	    type != CONFIG_TYPE_FLOAT) {
 		err_at(L, s, "%s must be %s", r->path,
-		    r->type == T_INT ? "an integer" : "a number");
+		    r->type == T_INT || r->type == T_INTS ? "an integer" :
+		    "a number");
 		return -1;
 	}
-	if (r->type == T_INT && type == CONFIG_TYPE_FLOAT) {
+	if ((r->type == T_INT || r->type == T_INTS) &&
+	    type == CONFIG_TYPE_FLOAT) {
 		v = config_setting_get_float(s);
 		if (v != floor(v) || fabs(v) > 9007199254740992.0) {
 			err_at(L, s, "%s must be an integer, not %.15g",
@@ -288,7 +308,7 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 			    config_setting_get_int64(s), range);
 		return -1;
 	}
-	if (r->type == T_INT)
+	if (r->type == T_INT || r->type == T_INTS)
 		*(long long *)dst = type == CONFIG_TYPE_FLOAT ?
 		    (long long)v : config_setting_get_int64(s);
 	else
@@ -319,6 +339,31 @@ set_choice(struct load *L, const config_setting_t *s, const struct row *r,
 	cfgtext_quote(q, sizeof(q), v);
 	err_at(L, s, "%s \"%s\" is not one of: %s", r->path, q, r->words);
 	return -1;
+}
+
+/* [m, n] or [m, n, k]: positive integers, stored with their count. */
+static int
+set_ints(struct load *L, const config_setting_t *s, const struct row *r,
+    struct int_list *dst)
+{
+	int n = config_setting_length(s);
+
+	if ((config_setting_type(s) != CONFIG_TYPE_ARRAY &&
+	    config_setting_type(s) != CONFIG_TYPE_LIST) || n < 2 || n > 3) {
+		err_at(L, s, "%s must be an array of 2 or 3 integers: "
+		    "[8, 13] or [8, 13, 21]", r->path);
+		return -1;
+	}
+	for (int i = 0; i < n; i++) {
+		long long v;
+
+		if (set_number(L, config_setting_get_elem(s, (unsigned)i),
+		    r, &v) < 0)
+			return -1;
+		dst->v[i] = (int)v;
+	}
+	dst->n = n;
+	return 0;
 }
 
 /* A number, or a string holding an expression, compiled now. */
@@ -494,6 +539,8 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 		return set_names(L, s, r, base);
 	case T_WEIGHTS:
 		return set_weights(L, s, r, base);
+	case T_INTS:
+		return set_ints(L, s, r, dst);
 	case T_RANGES:
 		return load_ranges(L, s);
 	}
@@ -712,6 +759,7 @@ scene_free(struct scene *sc)
 		expr_free(rg->roll.e);
 	}
 	free(sc->ranges);
+	expr_free(sc->cyl.radius.e);
 	free(sc->objects);
 	free(sc->given);
 	*sc = (struct scene){0};
@@ -757,7 +805,7 @@ scene_settings_list(FILE *fp)
 {
 	static const char *const tn[] = {
 		"group", "integer", "number", "identifier", "string",
-		"expression", "names", "numbers", "list"
+		"expression", "names", "numbers", "integers", "list"
 	};
 
 	for (size_t i = 0; i < NROWS; i++)

@@ -31,6 +31,19 @@ struct expr_setting {
 	int		 line;
 };
 
+/* A short array of integers, [8, 13] or [8, 13, 21]. */
+struct int_list {
+	int		 v[3];
+	int		 n;
+};
+
+struct cyl_params {
+	struct expr_setting radius;	/* of the cylinder; may vary */
+	struct int_list	 parastichies;
+	double		 rise;		/* on a cylinder of radius 1 */
+	double		 length;
+};
+
 #define VARIANTS_MAX	256		/* objects in one organs entry */
 #define RANGES_MAX	1024		/* entries in organs */
 
@@ -55,6 +68,7 @@ struct scene {
 	long long	 count;
 	long long	 seed;
 	struct planar_params planar;
+	struct cyl_params cyl;
 	struct organ_range *ranges;	/* owned */
 	size_t		 nranges;
 	const char	**objects;	/* distinct organ object names */

@@ -67,7 +67,7 @@ static void put_count(struct sink *s, const struct tmpl_ctx *c)
 static void put_model(struct sink *s, const struct tmpl_ctx *c)
 { sink_puts(s, scene_model_name(c->sc->model)); }
 static void put_divergence(struct sink *s, const struct tmpl_ctx *c)
-{ sink_num(s, c->sc->divergence); }
+{ sink_num(s, c->r->divergence); }
 static void put_seed(struct sink *s, const struct tmpl_ctx *c)
 { sink_num(s, (double)c->sc->seed); }
 static void put_version(struct sink *s, const struct tmpl_ctx *c)

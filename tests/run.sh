@@ -8,6 +8,7 @@ log=tests/out/run.log
 {
 	$RUN "$TESTBIN/test_model"
 	$RUN "$TESTBIN/test_expr"
+	$RUN "$TESTBIN/test_cyl"
 	for t in golden cli scenes pov man; do
 		sh "tests/$t.sh"
 	done

@@ -1,0 +1,277 @@
+/*
+ * cylindrical.c - the cylindrical model: organ k at angle k alpha and
+ * height k h on a cylinder (cyl.c has the geometry).  The scene names
+ * the parastichy pair it wants, [m, n], or a triple [m, n, m+n], or
+ * gives the rise h itself.
+ *
+ * A taper (cylindrical.radius an expression of t) scales the pattern
+ * locally: organ k's rise and size follow the radius there, so the
+ * lattice stays similar to itself and the parastichies stay visible,
+ * as on a spruce cone or ABOP's Carex spike.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "cyl.h"
+#include "diag.h"
+#include "mem.h"
+#include "model.h"
+
+#define GOLDEN_DEG	137.50776405003785
+
+/* Divergence, rise and diameter, and what the pattern is. */
+struct pattern {
+	double	 alpha, h, d, lo, hi;
+	int	 m, n;
+};
+
+static int
+gcd(int a, int b)
+{
+	while (b != 0) {
+		int t = a % b;
+
+		a = b;
+		b = t;
+	}
+	return a;
+}
+
+/* The pattern from cylindrical.parastichies, with every check. */
+static int
+from_parastichies(const struct scene *sc, struct pattern *p)
+{
+	const struct int_list *par = &sc->cyl.parastichies;
+	const char *at = "cylindrical.parastichies";
+	int m = par->v[0], n = par->v[1];
+
+	if (m >= n) {
+		scene_error(sc, at, "parastichies (%d, %d) must be increasing: "
+		    "m < n", m, n);
+		return -1;
+	}
+	if (gcd(m, n) != 1) {
+		scene_error(sc, at, "parastichies (%d, %d) have the common "
+		    "factor %d: the pattern would not be a single spiral", m, n,
+		    gcd(m, n));
+		return -1;
+	}
+	p->m = m;
+	p->n = n;
+	cyl_range(m, n, &p->lo, &p->hi);
+	if (par->n == 3) {
+		if (par->v[2] != m + n) {
+			scene_error(sc, at, "a triple must be [m, n, m+n]: "
+			    "%d is not %d + %d", par->v[2], m, n);
+			return -1;
+		}
+		cyl_triple(m, n, &p->alpha, &p->h, &p->d);
+		if (scene_given(sc, "divergence")) {
+			scene_error(sc, "divergence", "the triple (%d, %d, %d) "
+			    "fixes the divergence at %.6f; leave divergence "
+			    "out", m, n, m + n, p->alpha);
+			return -1;
+		}
+		return 0;
+	}
+	if (!scene_given(sc, "divergence"))
+		/* The golden angle where it fits, else the range's middle. */
+		p->alpha = GOLDEN_DEG >= p->lo && GOLDEN_DEG <= p->hi ?
+		    GOLDEN_DEG : (p->lo + p->hi) / 2;
+	else if (cyl_fold(sc->divergence) < p->lo - 1e-9 ||
+	    cyl_fold(sc->divergence) > p->hi + 1e-9) {
+		scene_error(sc, "divergence", "divergence %.9g is outside "
+		    "[%.3f, %.3f] for parastichies (%d, %d)", sc->divergence,
+		    p->lo, p->hi, m, n);
+		return -1;
+	} else
+		p->alpha = sc->divergence;
+	if (cyl_pair(m, n, p->alpha, &p->h, &p->d) != 0) {
+		/* Only at a range end can rounding tip it over. */
+		scene_error(sc, "divergence", "no (%d, %d) pattern at "
+		    "divergence %.9g", m, n, p->alpha);
+		return -1;
+	}
+	return 0;
+}
+
+static int
+pattern_find(const struct scene *sc, struct pattern *p)
+{
+	int have_par = scene_given(sc, "cylindrical.parastichies") != 0;
+	int have_rise = scene_given(sc, "cylindrical.rise") != 0;
+
+	if (have_par == have_rise) {
+		scene_error(sc, have_par ? "cylindrical.rise" : "cylindrical",
+		    "give cylindrical.parastichies or cylindrical.rise, %s",
+		    have_par ? "not both" : "one of them");
+		return -1;
+	}
+	if (have_par)
+		return from_parastichies(sc, p);
+	p->alpha = sc->divergence;
+	p->h = sc->cyl.rise;
+	if (cyl_contacts(p->alpha, p->h, &p->m, &p->n, &p->d) != 0) {
+		scene_error(sc, "cylindrical.rise", "rise %.9g is too small to "
+		    "find the contact parastichies", p->h);
+		return -1;
+	}
+	cyl_range(p->m, p->n, &p->lo, &p->hi);
+	return 0;
+}
+
+/* How many organs: count, or as many as fit in cylindrical.length. */
+static long long
+organ_count(const struct scene *sc, const struct pattern *p, double R)
+{
+	int have_len = scene_given(sc, "cylindrical.length") != 0;
+	double n;
+
+	if (scene_given(sc, "count") && have_len) {
+		scene_error(sc, "cylindrical.length", "give count or "
+		    "cylindrical.length, not both");
+		return -1;
+	}
+	if (!have_len) {
+		if (!scene_given(sc, "count")) {
+			scene_error(sc, "count", "missing setting 'count' (or "
+			    "cylindrical.length)");
+			return -1;
+		}
+		return sc->count;
+	}
+	if (R < 0) {
+		scene_error(sc, "cylindrical.length", "cylindrical.length "
+		    "needs a constant cylindrical.radius; give count instead");
+		return -1;
+	}
+	n = floor(sc->cyl.length / (p->h * R) + 1e-9) + 1;
+	if (n > COUNT_MAX) {
+		scene_error(sc, "cylindrical.length", "cylindrical.length %.9g "
+		    "holds %.0f organs, more than %d", sc->cyl.length, n,
+		    COUNT_MAX);
+		return -1;
+	}
+	return (long long)n;
+}
+
+/* Organ k's radius; an error names the organ. */
+static int
+radius_at(const struct scene *sc, struct expr_env *env, long long k,
+    long long N, double *rho)
+{
+	const struct expr_setting *es = &sc->cyl.radius;
+
+	if (es->e == NULL) {
+		*rho = 1;
+		return 0;
+	}
+	env->n = k;
+	env->var[V_N] = (double)k;
+	env->var[V_COUNT] = (double)N;
+	env->var[V_T] = N > 1 ? (double)k / (double)(N - 1) : 0;
+	switch (expr_eval(es->e, env, rho)) {
+	case EXPR_OK:
+		if (*rho > 0)
+			return 0;
+		diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius is "
+		    "%.9g at organ %lld; it must be positive", *rho, k);
+		return -1;
+	case EXPR_DIVZERO:
+		diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius: "
+		    "division by zero at organ %lld", k);
+		return -1;
+	case EXPR_NOTFINITE:
+		break;
+	}
+	diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius is not a "
+	    "finite number at organ %lld", k);
+	return -1;
+}
+
+/* Place organ k given its radius, height and the surface's slope. */
+static void
+place(struct organ *o, double phi, double rho, double z, double slope)
+{
+	double c = cos(phi * (M_PI / 180)), s = sin(phi * (M_PI / 180));
+	double k = 1 / sqrt(1 + slope * slope);
+
+	o->phi = phi;
+	o->height = z;
+	o->pos[0] = rho * c;
+	o->pos[1] = rho * s;
+	o->pos[2] = z;
+	/* w the outward normal, u down the generating line (away from
+	 * the tip at the top), v = w x u turning counter-clockwise. */
+	o->w[0] = c * k;
+	o->w[1] = s * k;
+	o->w[2] = -slope * k;
+	o->u[0] = -slope * c * k;
+	o->u[1] = -slope * s * k;
+	o->u[2] = -k;
+	o->v[0] = -s;
+	o->v[1] = c;
+	o->v[2] = 0;
+}
+
+int
+cylindrical_run(const struct scene *sc, struct result *res)
+{
+	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
+	struct pattern p;
+	double Rconst = -1, *rho, *z;
+	long long N;
+	int dm, dn;
+
+	if (pattern_find(sc, &p) != 0)
+		return -1;
+	if (sc->cyl.radius.e == NULL)
+		Rconst = 1;
+	else
+		expr_is_constant(sc->cyl.radius.e, &Rconst);
+	if ((N = organ_count(sc, &p, Rconst)) < 0)
+		return -1;
+	if (Rconst <= 0 && Rconst != -1) {
+		scene_error(sc, "cylindrical.radius", "cylindrical.radius must "
+		    "be positive");
+		return -1;
+	}
+
+	rho = xcalloc((size_t)N, sizeof(*rho));
+	z = xcalloc((size_t)N, sizeof(*z));
+	for (long long k = 0; k < N; k++) {
+		if (radius_at(sc, &env, k, N, &rho[k]) != 0) {
+			free(rho);
+			free(z);
+			return -1;
+		}
+		/* The rise follows the radius: the mean of the two organs'. */
+		if (k > 0)
+			z[k] = z[k - 1] + p.h * (rho[k - 1] + rho[k]) / 2;
+	}
+
+	result_init(res, (size_t)N);
+	res->divergence = p.alpha;
+	res->objects = sc->objects;
+	res->nobjects = sc->nobjects;
+	for (long long k = 0; k < N; k++) {
+		long long a = k > 0 ? k - 1 : k, b = k + 1 < N ? k + 1 : k;
+		double slope = b > a && z[b] > z[a] ?
+		    (rho[b] - rho[a]) / (z[b] - z[a]) : 0;
+		struct organ *o = &res->organs[k];
+
+		place(o, angle_mod360((double)k, p.alpha), rho[k], z[k], slope);
+		o->radius = p.d / 2 * rho[k];
+		o->scale = o->radius;
+	}
+	free(rho);
+	free(z);
+
+	cyl_encyclic(p.m, p.n, &dm, &dn);
+	result_info(res, "parastichies", 2, (double)p.m, (double)p.n);
+	result_info(res, "encyclic", 2, (double)dm, (double)dn);
+	result_info(res, "range", 2, p.lo, p.hi);
+	result_info(res, "rise", 1, p.h);
+	result_info(res, "diameter", 1, p.d);
+	return 0;
+}
