@@ -1,0 +1,37 @@
+/* fuzz_template.c - libFuzzer harness for the template engine, parsing and writing. */
+#include <stdint.h>
+#include <string.h>
+
+#include "model.h"
+#include "scene.h"
+#include "template.h"
+#include "writer.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int
+LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+	static const char text[] = "model = \"planar\"; count = 5;\n"
+	    "organs = ( { object = [\"A\", \"B\"]; } );";
+	static struct scene sc;
+	static struct result res;
+	static int ready;
+	struct tmpl *t;
+	struct sink s;
+
+	if (!ready) {
+		if (scene_load_buffer(&sc, "t.cfg", text, strlen(text)) != 0 ||
+		    planar_run(&sc, &res) != 0 || organs_apply(&sc, &res) != 0)
+			return 0;
+		ready = 1;
+	}
+	if ((t = tmpl_parse("fuzz.tmpl", (const char *)data, size,
+	    pov_vars)) == NULL)
+		return 0;
+	sink_init(&s, NULL);
+	tmpl_write(t, &s, &sc, &res);
+	sink_free(&s);
+	tmpl_free(t);
+	return 0;
+}

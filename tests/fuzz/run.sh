@@ -1,0 +1,24 @@
+#!/bin/sh
+# run.sh SECONDS - run each fuzz harness for SECONDS on its corpus in
+# build-fuzz/corpus/NAME, seeded from the scenes, test inputs and
+# templates; crashes are written to build-fuzz/crash-NAME-*.
+set -u
+t=${1:-60}
+# libconfig 1.5 leaks on one kind of syntax error: not ours.
+LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
+export LSAN_OPTIONS
+for f in fuzz_scene fuzz_expr fuzz_template; do
+	c=build-fuzz/corpus/$f
+	mkdir -p "$c"
+	case $f in
+	fuzz_scene) cp scenes/*.cfg tests/golden/*.cfg tests/bad/*.cfg "$c"/ ;;
+	fuzz_expr) grep -ho '"[^"]*"' scenes/*.cfg tests/bad/expr-*.cfg |
+		tr -d '"' | awk '{ f = sprintf("%s/seed%d", c, NR); printf "%s", $0 > f; close(f) }' c="$c" ;;
+	fuzz_template) cp templates/*.tmpl tests/bad-pov/*.tmpl "$c"/ ;;
+	esac
+	echo "== $f, $t s"
+	./build-fuzz/$f -max_total_time="$t" -max_len=8192 -timeout=10 \
+		-rss_limit_mb=2048 -close_fd_mask=2 -print_final_stats=1 \
+		-artifact_prefix=build-fuzz/crash-$f- "$c" 2>&1 |
+		grep -E '^(#[0-9]+.*(DONE|pulse)|stat::|==[0-9]+==ERROR|SUMMARY|artifact)' | tail -8
+done
