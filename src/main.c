@@ -25,6 +25,8 @@
 const struct writer writers[] = {
 	{ "pov", NULL, "pov.tmpl", pov_vars, pov_check,
 	  "a POV-Ray include file declaring the structure" },
+	{ "blender", NULL, "blender.tmpl", blender_vars, blender_check,
+	  "a Python script that builds the structure in Blender" },
 	{ "csv", csv_write, NULL, NULL, NULL,
 	  "one line per organ: position, frame, scale" },
 	{ "info", info_write, NULL, NULL, NULL,
@@ -43,6 +45,7 @@ struct args {
 	const char	*scene;
 	const char	*template;	/* --template, or NULL */
 	int		 arrays;	/* --arrays */
+	int		 objects;	/* --blender-objects */
 };
 
 static void
@@ -52,7 +55,8 @@ usage(FILE *fp)
 	for (const struct writer *w = writers; w->name != NULL; w++)
 		fprintf(fp, "%s--%s", w == writers ? "" : " | ", w->name);
 	fputs(") [-o FILE]\n"
-	    "                     [--template FILE] [--arrays] SCENE.cfg\n"
+	    "                     [--template FILE] [--arrays] "
+	    "[--blender-objects] SCENE.cfg\n"
 	    "       phyllo-export --help | --version\n", fp);
 }
 
@@ -66,10 +70,13 @@ help(void)
 		printf("  --%-12s%s\n", w->name, w->help);
 	puts("\n  -o FILE        write FILE (replaced only on success) "
 	    "instead of standard output\n"
-	    "  --template FILE  write --pov through this template instead "
-	    "of the default\n"
+	    "  --template FILE  write --pov or --blender through this template "
+	    "instead of\n"
+	    "                 the default\n"
 	    "  --arrays       --pov: declare the organs as arrays "
 	    "(pov-arrays.tmpl)\n"
+	    "  --blender-objects  --blender: one linked duplicate per organ "
+	    "instead of instances\n"
 	    "  -h, --help     show this help\n"
 	    "  -V, --version  show the version\n\n"
 	    "Models: planar, cylindrical.  See phyllo-export(1) and phyllo-export(5).");
@@ -91,6 +98,8 @@ parse_args(int argc, char *argv[], struct args *a)
 	longopts[n++] = (struct option){ "template", required_argument, NULL,
 	    't' };
 	longopts[n++] = (struct option){ "arrays", no_argument, NULL, 'a' };
+	longopts[n++] = (struct option){ "blender-objects", no_argument, NULL,
+	    'b' };
 	longopts[n++] = (struct option){ "help", no_argument, NULL, 'h' };
 	longopts[n++] = (struct option){ "version", no_argument, NULL, 'V' };
 	longopts[n] = (struct option){ NULL, 0, NULL, 0 };
@@ -112,6 +121,9 @@ parse_args(int argc, char *argv[], struct args *a)
 			break;
 		case 'a':
 			a->arrays = 1;
+			break;
+		case 'b':
+			a->objects = 1;
 			break;
 		case ':':
 			diag(ST_USAGE, NULL, 0, 0, "option %s needs an argument",
@@ -142,9 +154,18 @@ parse_args(int argc, char *argv[], struct args *a)
 		usage(stderr);
 		return ST_USAGE;
 	}
-	if ((a->template != NULL || a->arrays) && a->writer->tmpl == NULL) {
+	if (a->template != NULL && a->writer->tmpl == NULL) {
 		diag(ST_USAGE, NULL, 0, 0, "--%s has no template; --template "
-		    "and --arrays go with --pov", a->writer->name);
+		    "goes with --pov and --blender", a->writer->name);
+		return ST_USAGE;
+	}
+	if (a->arrays && a->writer->vars != pov_vars) {
+		diag(ST_USAGE, NULL, 0, 0, "--arrays goes with --pov");
+		return ST_USAGE;
+	}
+	if (a->objects && a->writer->vars != blender_vars) {
+		diag(ST_USAGE, NULL, 0, 0, "--blender-objects goes with "
+		    "--blender");
 		return ST_USAGE;
 	}
 	if (a->template != NULL && a->arrays) {
@@ -183,7 +204,7 @@ write_result(const struct args *a, const struct tmpl *t,
 		return;
 	sink_init(&s, fp);
 	if (t != NULL)
-		tmpl_write(t, &s, sc, res);
+		tmpl_write(t, &s, sc, res, a->objects ? TO_OBJECTS : 0);
 	else
 		a->writer->write(&s, sc, res);
 	if (sink_finish(&s) != 0) {
@@ -219,7 +240,7 @@ prepare(const struct args *a, struct scene *sc, struct tmpl **t,
 int
 main(int argc, char *argv[])
 {
-	struct args a = { NULL, NULL, NULL, NULL, 0 };
+	struct args a = { NULL, NULL, NULL, NULL, 0, 0 };
 	struct scene sc;
 	struct tmpl *t = NULL;
 	struct result res = { 0 };

@@ -97,6 +97,17 @@ static void put_object(struct sink *s, const struct tmpl_ctx *c)
 static void put_object_index(struct sink *s, const struct tmpl_ctx *c)
 { sink_uint(s, object_of(c)); }
 
+/* How many organs are this object. */
+static void
+put_object_organs(struct sink *s, const struct tmpl_ctx *c)
+{
+	size_t k = object_of(c), n = 0;
+
+	for (size_t i = 0; i < c->r->count; i++)
+		n += c->r->organs[i].object == k;
+	sink_uint(s, n);
+}
+
 /* "," between items of a block, nothing after the last. */
 static void
 put_comma(struct sink *s, const struct tmpl_ctx *c)
@@ -148,6 +159,7 @@ static const struct tmpl_var common[] = {
 	{ "OBJECT_COUNT", ANY, put_object_count },
 	{ "OBJECT", ITEM, put_object },
 	{ "OBJECT_INDEX", ITEM, put_object_index },
+	{ "OBJECT_ORGANS", ITEM, put_object_organs },
 	{ "COMMA", ITEM, put_comma },
 	{ "N", TS_ORGAN, put_n },
 	{ "T", TS_ORGAN, put_t },
@@ -413,9 +425,9 @@ write_run(const struct tmpl *t, size_t from, size_t to, struct sink *s,
 
 void
 tmpl_write(const struct tmpl *t, struct sink *s, const struct scene *sc,
-    const struct result *r)
+    const struct result *r, unsigned opts)
 {
-	struct tmpl_ctx c = { sc, r, TS_GLOBAL, 0, 0 };
+	struct tmpl_ctx c = { sc, r, opts, TS_GLOBAL, 0, 0 };
 	size_t i = 0, from = 0;
 
 	for (; i < t->nsegs; i++) {

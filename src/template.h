@@ -15,9 +15,13 @@
 #define TS_OBJECT	0x2	/* inside @@objects: once per organ object */
 #define TS_ORGAN	0x4	/* inside @@organs: once per organ */
 
+/* Writer options a template may read. */
+#define TO_OBJECTS	0x1	/* --blender-objects */
+
 struct tmpl_ctx {
 	const struct scene	*sc;
 	const struct result	*r;
+	unsigned		 opts;		/* TO_* */
 	int			 scope;		/* TS_* being written */
 	size_t			 object;	/* in TS_OBJECT */
 	size_t			 organ;		/* in TS_ORGAN */
@@ -39,7 +43,7 @@ struct tmpl	*tmpl_builtin(const char *name, const struct tmpl_var *extra);
 struct tmpl	*tmpl_parse(const char *file, const char *text, size_t len,
 		    const struct tmpl_var *extra);
 void		 tmpl_write(const struct tmpl *, struct sink *,
-		    const struct scene *, const struct result *);
+		    const struct scene *, const struct result *, unsigned opts);
 void		 tmpl_free(struct tmpl *);
 
 /* Helpers for writers' placeholders. */

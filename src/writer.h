@@ -31,5 +31,7 @@ writer_fn info_write;
 
 extern const struct tmpl_var pov_vars[];
 int	pov_check(const struct scene *);
+extern const struct tmpl_var blender_vars[];
+int	blender_check(const struct scene *);
 
 #endif

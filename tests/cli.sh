@@ -53,6 +53,14 @@ assert "exit 2" '[ $rc -eq 2 ]'
 assert "says so" 'grep -q "^phyllo-export: --csv has no template" $OUT/stderr'
 end
 
+try "--arrays goes with --pov only" px --blender --arrays "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+end
+
+try "--blender-objects goes with --blender only" px --pov --blender-objects "$GOOD"
+assert "exit 2" '[ $rc -eq 2 ]'
+end
+
 try "--template and --arrays exclude each other" px --pov --arrays --template templates/pov.tmpl "$GOOD"
 assert "exit 2" '[ $rc -eq 2 ]'
 end

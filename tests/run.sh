@@ -9,7 +9,7 @@ log=tests/out/run.log
 	$RUN "$TESTBIN/test_model"
 	$RUN "$TESTBIN/test_expr"
 	$RUN "$TESTBIN/test_cyl"
-	for t in golden cli scenes pov man; do
+	for t in golden cli scenes pov blender man; do
 		sh "tests/$t.sh"
 	done
 } 2>&1 | tee "$log" | grep -v '^ok - ' | grep -v '^ok - # SKIP'

@@ -38,7 +38,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	info_write(&s, &sc, &res);
 	if (pov_check(&sc) == 0 &&
 	    (t = tmpl_builtin("pov.tmpl", pov_vars)) != NULL) {
-		tmpl_write(t, &s, &sc, &res);
+		tmpl_write(t, &s, &sc, &res, 0);
 		tmpl_free(t);
 	}
 	sink_free(&s);

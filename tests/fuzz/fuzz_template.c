@@ -30,7 +30,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	    pov_vars)) == NULL)
 		return 0;
 	sink_init(&s, NULL);
-	tmpl_write(t, &s, &sc, &res);
+	tmpl_write(t, &s, &sc, &res, 0);
 	sink_free(&s);
 	tmpl_free(t);
 	return 0;

@@ -1,0 +1,155 @@
+/*
+ * out_blender.c - the placeholders of the Blender script template
+ * (templates/blender.tmpl).  The organs travel as base64 of little-
+ * endian float32 blocks, grouped by organ object so that the script
+ * only slices arrays: every position (x, y, z), then every rotation
+ * (Euler XYZ, radians), then every scale.  About 38 bytes an organ.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag.h"
+#include "mem.h"
+#include "writer.h"
+
+/* Euler XYZ angles (Blender's default order) of the rotation [u v w]. */
+static void
+euler_xyz(const struct organ *o, double e[3])
+{
+	/* R = Rz Ry Rx; its columns are u, v, w. */
+	double s = -o->u[2];
+
+	if (s > 1)
+		s = 1;
+	if (s < -1)
+		s = -1;
+	e[1] = asin(s);
+	if (fabs(s) < 1 - 1e-12) {
+		e[0] = atan2(o->v[2], o->w[2]);
+		e[2] = atan2(o->u[1], o->u[0]);
+	} else {
+		/* Gimbal lock: only X + Z or X - Z is defined; put it in X. */
+		e[0] = atan2(-o->w[1] * s, o->v[1]);
+		e[2] = 0;
+	}
+}
+
+struct b64 {
+	struct sink	*s;
+	unsigned char	 in[3];
+	int		 n;
+	size_t		 col;
+};
+
+static void
+b64_flush(struct b64 *b, int final)
+{
+	static const char abc[] =
+	    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+	char out[4];
+
+	if (b->n == 0)
+		return;
+	if (b->n < 3 && !final)
+		return;
+	out[0] = abc[b->in[0] >> 2];
+	out[1] = abc[((b->in[0] & 3) << 4) | (b->n > 1 ? b->in[1] >> 4 : 0)];
+	out[2] = b->n > 1 ? abc[((b->in[1] & 15) << 2) |
+	    (b->n > 2 ? b->in[2] >> 6 : 0)] : '=';
+	out[3] = b->n > 2 ? abc[b->in[2] & 63] : '=';
+	/* Python joins adjacent string literals: lines of 1000. */
+	if (b->col == 1000) {
+		sink_puts(b->s, "\"\n    \"");
+		b->col = 0;
+	}
+	sink_write(b->s, out, 4);
+	b->col += 4;
+	b->n = 0;
+}
+
+static void
+b64_float(struct b64 *b, double x)
+{
+	float f = (float)x;
+	uint32_t u;
+
+	memcpy(&u, &f, sizeof(u));
+	for (int i = 0; i < 4; i++) {
+		b->in[b->n++] = (unsigned char)(u >> (8 * i));
+		b64_flush(b, 0);
+	}
+}
+
+/* The organs in object order, keeping index order within an object. */
+static size_t *
+by_object(const struct result *r)
+{
+	size_t *start = xcalloc(r->nobjects + 1, sizeof(*start));
+	size_t *order = xcalloc(r->count, sizeof(*order));
+
+	for (size_t i = 0; i < r->count; i++)
+		start[r->organs[i].object + 1]++;
+	for (size_t k = 0; k < r->nobjects; k++)
+		start[k + 1] += start[k];
+	for (size_t i = 0; i < r->count; i++)
+		order[start[r->organs[i].object]++] = i;
+	free(start);
+	return order;
+}
+
+static void
+put_data(struct sink *s, const struct tmpl_ctx *c)
+{
+	struct b64 b = { s, { 0 }, 0, 0 };
+	size_t *order = by_object(c->r);
+
+	sink_putc(s, '"');
+	for (int block = 0; block < 3; block++)
+		for (size_t i = 0; i < c->r->count; i++) {
+			const struct organ *o = &c->r->organs[order[i]];
+			double e[3];
+
+			if (block == 0)
+				for (int j = 0; j < 3; j++)
+					b64_float(&b, o->pos[j]);
+			else if (block == 1) {
+				euler_xyz(o, e);
+				for (int j = 0; j < 3; j++)
+					b64_float(&b, e[j]);
+			} else
+				b64_float(&b, o->scale);
+		}
+	b64_flush(&b, 1);
+	sink_putc(s, '"');
+	free(order);
+}
+
+/* True with --blender-objects: linked duplicates, not instances. */
+static void
+put_linked(struct sink *s, const struct tmpl_ctx *c)
+{
+	sink_puts(s, c->opts & TO_OBJECTS ? "True" : "False");
+}
+
+const struct tmpl_var blender_vars[] = {
+	{ "DATA", TS_GLOBAL, put_data },
+	{ "LINKED", TS_GLOBAL, put_linked },
+	{ NULL, 0, NULL }
+};
+
+/* Blender keeps 63 bytes of a name; ours are shorter.  No clashes. */
+int
+blender_check(const struct scene *sc)
+{
+	for (size_t i = 0; i < sc->nranges; i++)
+		for (size_t k = 0; k < sc->ranges[i].nnames; k++)
+			if (strcmp(sc->ranges[i].names[k], sc->name) == 0) {
+				diag(ST_SCENE, sc->file, sc->ranges[i].line, 0,
+				    "organ object \"%s\" has the scene's name",
+				    sc->name);
+				return -1;
+			}
+	return 0;
+}

@@ -1,0 +1,108 @@
+# check.py - after the generated script has run (twice), compare what
+# Blender built with the CSV: every organ an instance (or a linked
+# duplicate) of the right object, with the CSV's frame and scale, one
+# copy only, no orphan data.  Usage:
+#   blender -b FILE.blend --python script.py --python script.py
+#       --python check.py -- CSV NAME instances|objects
+# Prints "check: ..." lines and exits 1 (with --python-exit-code 1) on
+# a failure.
+import csv
+import sys
+
+import bpy
+
+csv_path, name, mode = sys.argv[sys.argv.index("--") + 1:][:3]
+TAG = "phyllo_export"
+rows = list(csv.DictReader(open(csv_path)))
+failures = []
+
+
+def check(ok, what):
+    print("check: %s %s" % ("ok" if ok else "FAILED", what))
+    if not ok:
+        failures.append(what)
+
+
+def organ_parts(organ):
+    """The object names an instance of this organ shows."""
+    ob = bpy.data.objects.get(organ)
+    if ob is not None:
+        return [ob.name]
+    return sorted(o.name for o in bpy.data.collections[organ].objects)
+
+
+def expected():
+    out = []
+    for r in rows:
+        f = {k: float(r[k]) for k in r if k != "object"}
+        s = f["scale"]
+        cols = [(f["ux"] * s, f["uy"] * s, f["uz"] * s),
+                (f["vx"] * s, f["vy"] * s, f["vz"] * s),
+                (f["wx"] * s, f["wy"] * s, f["wz"] * s),
+                (f["x"], f["y"], f["z"])]
+        for part in organ_parts(r["object"]):
+            out.append((part, cols))
+    return out
+
+
+def columns(m):
+    return [tuple(m[i][j] for i in range(3)) for j in range(4)]
+
+
+def built():
+    top = bpy.data.collections[name]
+    ours = {o.name for c in [top] + list(top.children_recursive)
+            for o in c.objects}
+    dg = bpy.context.evaluated_depsgraph_get()
+    out = []
+    if mode == "instances":
+        for inst in dg.object_instances:
+            if inst.is_instance and inst.parent.name in ours:
+                out.append((inst.instance_object.name,
+                            columns(inst.matrix_world)))
+    else:
+        for o in top.objects:
+            if o.instance_type == "COLLECTION":
+                for part in o.instance_collection.objects:
+                    out.append((part.name, columns(o.matrix_world)))
+            else:
+                out.append((o.data.name if o.data.get(TAG) else
+                            [p.name for p in bpy.data.objects
+                             if p.data == o.data and p.get(TAG) is None][0],
+                            columns(o.matrix_world)))
+    return out
+
+
+want, got = expected(), built()
+check(len(got) == len(want), "%d placed organs (parts), CSV says %d"
+      % (len(got), len(want)))
+pool = {}
+for part, cols in got:
+    pool.setdefault(part, []).append(cols)
+worst, missing = 0.0, 0
+for part, cols in want:
+    cands = pool.get(part, [])
+    best, bi = None, -1
+    for i, c in enumerate(cands):
+        d = max(abs(a - b) for u, v in zip(c, cols) for a, b in zip(u, v))
+        if best is None or d < best:
+            best, bi = d, i
+    if best is None:
+        missing += 1
+        continue
+    worst = max(worst, best)
+    cands.pop(bi)
+check(missing == 0, "every organ is the right object (%d missing)" % missing)
+check(worst < 2e-5, "matrices equal the CSV frames times scale, at the "
+      "CSV positions (worst %.2g)" % worst)
+check(len([c for c in bpy.data.collections if c.name == name or
+           c.name.startswith(name + ".")]) == 1, "one collection %r" % name)
+orphans = [d.name for d in list(bpy.data.meshes) + list(bpy.data.node_groups)
+           if d.users == 0]
+check(not orphans, "no orphan meshes or node groups %s" % orphans)
+seed = bpy.data.objects.get("Seed")
+if seed is not None and seed.get(TAG) is None:
+    check(tuple(seed.location) == (5, 5, 5) and len(seed.data.vertices) == 8,
+          "the artist's Seed is untouched")
+if failures:
+    raise SystemExit("check: %d failed" % len(failures))
