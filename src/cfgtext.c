@@ -45,6 +45,17 @@ skip_inert(const char *p, const char *end)
 	return (size_t)(q - p);
 }
 
+/* How many of the characters in [p, end) are in set, from the start. */
+static size_t
+span(const char *p, const char *end, const char *set)
+{
+	const char *q = p;
+
+	while (q < end && strchr(set, *q) != NULL)
+		q++;
+	return (size_t)(q - p);
+}
+
 /* Does the integer literal of n characters at p fit in a C int? */
 static int
 fits_int(const char *p, size_t n)
@@ -92,17 +103,19 @@ cfgtext_prepare(const char *text, size_t len, int *nul_line)
 		    p[-1] == '.'))) {
 			const char *q = p;
 
+			int hex = end - p > 1 && p[0] == '0' &&
+			    (p[1] == 'x' || p[1] == 'X');
+
 			while (q < end && (isalnum((unsigned char)*q) ||
 			    *q == '_' || *q == '.' || ((*q == '-' ||
 			    *q == '+') && (q[-1] == 'e' || q[-1] == 'E') &&
-			    !(p[0] == '0' && (p[1] == 'x' || p[1] == 'X')))))
+			    !hex)))
 				q++;
 			memcpy(o, p, (size_t)(q - p));
 			o += q - p;
 			/* Only plain digits, or 0x and hex digits, are integers. */
-			if (strspn(p, "0123456789") == (size_t)(q - p) ||
-			    (q - p > 2 && p[0] == '0' && (p[1] == 'x' ||
-			    p[1] == 'X') && strspn(p + 2,
+			if (span(p, q, "0123456789") == (size_t)(q - p) ||
+			    (hex && q - p > 2 && span(p + 2, q,
 			    "0123456789abcdefABCDEF") == (size_t)(q - p - 2)))
 				if (!fits_int(p, (size_t)(q - p)))
 					*o++ = 'L';

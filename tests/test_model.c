@@ -459,6 +459,31 @@ test_transforms(void)
 	done(&sc2, &res);
 }
 
+/*
+ * Found by fuzz_scene: a number at the very end of a buffer that is
+ * not NUL-terminated was scanned past its end.  Under check-asan an
+ * over-read of this exact-size heap copy fails the run.
+ */
+static void
+test_unterminated(void)
+{
+	static const char crash[] = "model 102\273\ncyli= [0";
+	static const char *const texts[] = { crash, "model = \"planar\";\n"
+	    "count = 12", "model = \"planar\"; count = 0x1F" };
+
+	for (size_t i = 0; i < 3; i++) {
+		size_t len = strlen(texts[i]);
+		char *buf = malloc(len);
+		struct scene sc;
+
+		memcpy(buf, texts[i], len);
+		scene_load_buffer(&sc, "t.cfg", buf, len);
+		scene_free(&sc);
+		free(buf);
+	}
+	check(1, "scene text need not end in NUL (fuzz_scene regression)");
+}
+
 int
 main(void)
 {
@@ -470,5 +495,6 @@ main(void)
 	test_organ_ranges();
 	test_variants();
 	test_transforms();
+	test_unterminated();
 	return failures != 0;
 }
