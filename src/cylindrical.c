@@ -209,9 +209,6 @@ place(struct organ *o, double phi, double rho, double z, double slope)
 	o->u[0] = -slope * c * k;
 	o->u[1] = -slope * s * k;
 	o->u[2] = -k;
-	o->v[0] = -s;
-	o->v[1] = c;
-	o->v[2] = 0;
 }
 
 int

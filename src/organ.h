@@ -4,17 +4,20 @@
 
 #include <stddef.h>
 
+#include "vec.h"
+
 /*
  * One placed organ in the world frame (right-handed, Z up).  The frame
  * is orthonormal: w is the outward surface normal, u the tangent of the
  * generating curve pointing away from the tip (radially outward on a
- * disk), v = w x u.  An organ model built with its outward direction
- * along local +X and its up along local +Z lands here by the matrix
- * [u v w] * scale + pos.
+ * disk), v = w x u, which organ_v() computes rather than the array
+ * storing it (10 M organs must fit in about 1 GiB).  An organ model
+ * built with its outward direction along local +X and its up along
+ * local +Z lands here by the matrix [u v w] * scale + pos.
  */
 struct organ {
 	double		 pos[3];
-	double		 u[3], v[3], w[3];
+	double		 u[3], w[3];
 	double		 scale;		/* applied to the organ model */
 	double		 radius;	/* packing/primordium radius */
 	double		 phi;		/* angle about the axis, degrees */
@@ -40,6 +43,12 @@ struct result {
 	struct info_item info[INFO_MAX];
 	int		 ninfo;
 };
+
+static inline void
+organ_v(const struct organ *o, double v[3])
+{
+	vec_cross(v, o->w, o->u);
+}
 
 void	result_init(struct result *, size_t count);
 void	result_free(struct result *);

@@ -202,8 +202,12 @@ apply_span(const struct scene *sc, const struct span *sp, struct result *r)
 			o->pos[i] += alt * o->w[i];
 		if (tilt != 0)
 			turn(o->u, o->w, tilt);		/* about v */
-		if (roll != 0)
-			turn(o->u, o->v, roll);		/* about w */
+		if (roll != 0) {
+			double v[3];
+
+			organ_v(o, v);
+			turn(o->u, v, roll);		/* about w */
+		}
 	}
 	return 0;
 }

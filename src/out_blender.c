@@ -19,19 +19,20 @@ static void
 euler_xyz(const struct organ *o, double e[3])
 {
 	/* R = Rz Ry Rx; its columns are u, v, w. */
-	double s = -o->u[2];
+	double s = -o->u[2], v[3];
 
+	organ_v(o, v);
 	if (s > 1)
 		s = 1;
 	if (s < -1)
 		s = -1;
 	e[1] = asin(s);
 	if (fabs(s) < 1 - 1e-12) {
-		e[0] = atan2(o->v[2], o->w[2]);
+		e[0] = atan2(v[2], o->w[2]);
 		e[2] = atan2(o->u[1], o->u[0]);
 	} else {
 		/* Gimbal lock: only X + Z or X - Z is defined; put it in X. */
-		e[0] = atan2(-o->w[1] * s, o->v[1]);
+		e[0] = atan2(-o->w[1] * s, v[1]);
 		e[2] = 0;
 	}
 }
@@ -82,19 +83,20 @@ b64_float(struct b64 *b, double x)
 	}
 }
 
-/* The organs in object order, keeping index order within an object. */
-static size_t *
+/* The organs in object order, keeping index order within an object;
+ * 32 bits suffice for COUNT_MAX and halve this array. */
+static uint32_t *
 by_object(const struct result *r)
 {
 	size_t *start = xcalloc(r->nobjects + 1, sizeof(*start));
-	size_t *order = xcalloc(r->count, sizeof(*order));
+	uint32_t *order = xcalloc(r->count, sizeof(*order));
 
 	for (size_t i = 0; i < r->count; i++)
 		start[r->organs[i].object + 1]++;
 	for (size_t k = 0; k < r->nobjects; k++)
 		start[k + 1] += start[k];
 	for (size_t i = 0; i < r->count; i++)
-		order[start[r->organs[i].object]++] = i;
+		order[start[r->organs[i].object]++] = (uint32_t)i;
 	free(start);
 	return order;
 }
@@ -103,7 +105,7 @@ static void
 put_data(struct sink *s, const struct tmpl_ctx *c)
 {
 	struct b64 b = { s, { 0 }, 0, 0 };
-	size_t *order = by_object(c->r);
+	uint32_t *order = by_object(c->r);
 
 	sink_putc(s, '"');
 	for (int block = 0; block < 3; block++)

@@ -9,8 +9,10 @@ csv_write(struct sink *s, const struct scene *sc, const struct result *r)
 	    "scale,radius\n");
 	for (size_t i = 0; i < r->count; i++) {
 		const struct organ *o = &r->organs[i];
-		const double *vals[4] = { o->pos, o->u, o->v, o->w };
+		double v[3];
+		const double *vals[4] = { o->pos, o->u, v, o->w };
 
+		organ_v(o, v);
 		sink_uint(s, i);
 		sink_putc(s, ',');
 		/* Object names are identifiers: no quoting needed. */

@@ -30,8 +30,10 @@ static void
 put_matrix(struct sink *s, const struct tmpl_ctx *c)
 {
 	const struct organ *o = tmpl_organ(c);
-	const double *rows[4] = { o->u, o->w, o->v, o->pos };
+	double v[3];
+	const double *rows[4] = { o->u, o->w, v, o->pos };
 
+	organ_v(o, v);
 	sink_putc(s, '<');
 	for (int i = 0; i < 4; i++) {
 		double k = i < 3 ? o->scale : 1;
@@ -50,8 +52,14 @@ static void put_pos(struct sink *s, const struct tmpl_ctx *c)
 { vec(s, tmpl_organ(c)->pos, 1); }
 static void put_u(struct sink *s, const struct tmpl_ctx *c)
 { vec(s, tmpl_organ(c)->u, 1); }
-static void put_v(struct sink *s, const struct tmpl_ctx *c)
-{ vec(s, tmpl_organ(c)->v, 1); }
+static void
+put_v(struct sink *s, const struct tmpl_ctx *c)
+{
+	double v[3];
+
+	organ_v(tmpl_organ(c), v);
+	vec(s, v, 1);
+}
 static void put_w(struct sink *s, const struct tmpl_ctx *c)
 { vec(s, tmpl_organ(c)->w, 1); }
 

@@ -81,9 +81,6 @@ planar_run(const struct scene *sc, struct result *res)
 		o->w[0] = -slope * cs * k;
 		o->w[1] = -slope * sn * k;
 		o->w[2] = k;
-		o->v[0] = -sn;
-		o->v[1] = cs;
-		o->v[2] = 0;
 		/* Area per organ d(pi rho^2)/dn shared as hexagons. */
 		o->radius = sqrt(M_PI * (p->inner + c * pm) *
 		    (c * p->exponent * pm / m) / sqrt(3.0));

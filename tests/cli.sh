@@ -83,6 +83,21 @@ assert "exit 0" '[ $rc -eq 0 ]'
 assert "same output" 'cmp -s $OUT/stdout $OUT/explicit.inc'
 end
 
+# Scene file names are the one string from outside that reaches the
+# POV-Ray and Python outputs (in their header comments).
+for weird in 'q"uote' "back\\slash" 'new
+line' 'tri"""ple' 'hash#brace}' "$(printf 'lat\351in')"; do
+	f="$OUT/$weird.cfg"
+	cp "$GOOD" "$f"
+	try "a scene file named $(printf %s "$weird" | od -An -c | tr -s ' \n' ' ')stays inert" true
+	px --pov -o "$OUT/weird.inc" "$f" && px --blender -o "$OUT/weird.py" "$f"
+	rc=$?
+	assert "both written" '[ $rc -eq 0 ]'
+	assert "Python parses it" 'python3 -c "import ast, sys; ast.parse(open(sys.argv[1], \"rb\").read())" $OUT/weird.py'
+	assert "only safe characters reach the headers" '[ -z "$(grep -h " from " $OUT/weird.inc $OUT/weird.py | head -2 | sed "s/.* from //" | tr -d "A-Za-z0-9._ ()-")" ]'
+	end
+done
+
 try "in a template @@ writes one @, other @s stay" sh -c 'printf "a@@b c@d @e@ @NAME@@@\n" >"$0/at.tmpl" && "$1" --pov --template "$0/at.tmpl" "$2"' "$OUT" "$PHYLLO" "$GOOD"
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "text" '[ "$(cat $OUT/stdout)" = "a@b c@d @e@ Vogel90@" ]'
@@ -214,23 +229,27 @@ fi
 # A run killed while writing leaves neither a temporary file nor a
 # changed target.  5 M organs take seconds to write, time to catch it.
 printf 'model = "planar";\ncount = 5000000;\n' >"$OUT/big.cfg"
-printf 'precious\n' >"$OUT/sig.csv"
-try "SIGTERM while writing removes the temporary file" true
-"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
-pid=$!
-i=0
-while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^\.sig')" ]; do
-	sleep 0.05
-	i=$((i + 1))
+for sig in TERM INT; do
+	printf 'precious\n' >"$OUT/sig.csv"
+	try "SIG$sig while writing removes the temporary file" true
+	# A shell started in the background ignores SIGINT in its children;
+	# the program sets its own handlers, so it still sees it.
+	"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
+	pid=$!
+	i=0
+	while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^\.sig')" ]; do
+		sleep 0.05
+		i=$((i + 1))
+	done
+	kill -$sig $pid 2>/dev/null
+	wait $pid 2>/dev/null
+	rc=$?
+	assert "the temporary file had appeared" '[ $i -lt 200 ]'
+	assert "killed by the signal" '[ $rc -gt 128 ]'
+	assert "target unchanged" '[ "$(cat $OUT/sig.csv)" = precious ]'
+	assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.sig")" ]'
+	end
 done
-kill -TERM $pid 2>/dev/null
-wait $pid 2>/dev/null
-rc=$?
-assert "the temporary file had appeared" '[ $i -lt 200 ]'
-assert "killed by the signal" '[ $rc -gt 128 ]'
-assert "target unchanged" '[ "$(cat $OUT/sig.csv)" = precious ]'
-assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.sig")" ]'
-end
 
 printf 'model = "planar";\ncount = 1000000;\n' >"$OUT/million.cfg"
 try "a million organs are written in full" sh -c '"$0" --csv "$1" | wc -l' "$PHYLLO" "$OUT/million.cfg"

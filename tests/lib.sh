@@ -5,9 +5,10 @@
 OUT=tests/out/$(basename "$0" .sh)
 rm -rf "$OUT" && mkdir -p "$OUT" || exit 1
 
-ok() { echo "ok - $*"; }
-notok() { echo "not ok - $*"; }
-skip() { echo "ok - # SKIP $*"; }
+# printf, not echo: dash's echo would turn a \n in a name into a newline.
+ok() { printf 'ok - %s\n' "$*"; }
+notok() { printf 'not ok - %s\n' "$*"; }
+skip() { printf 'ok - # SKIP %s\n' "$*"; }
 
 # px ARGS: run phyllo-export, under valgrind when RUN says so.
 px() {

@@ -199,9 +199,10 @@ test_model(void)
 		ef = fmax(ef, fabs(o->w[0] - o->pos[0] / 2.5) +
 		    fabs(o->w[1] - o->pos[1] / 2.5) + fabs(o->w[2]));
 		ef = fmax(ef, fabs(o->u[2] + 1));
-		vec_cross(c, o->w, o->u);
-		for (int i = 0; i < 3; i++)
-			ef = fmax(ef, fabs(c[i] - o->v[i]));
+		/* v = w x u turns counter-clockwise: along (-y, x). */
+		organ_v(o, c);
+		ef = fmax(ef, fabs(c[0] + o->pos[1] / 2.5) +
+		    fabs(c[1] - o->pos[0] / 2.5) + fabs(c[2]));
 	}
 	check(e < 1e-9, "organ k at angle k alpha, height k h R on radius R, "
 	    "packing radius d/2 R (worst %.2g)", e);
