@@ -189,28 +189,6 @@ radius_at(const struct scene *sc, struct expr_env *env, long long k,
 	return -1;
 }
 
-/* Place organ k given its radius, height and the surface's slope. */
-static void
-place(struct organ *o, double phi, double rho, double z, double slope)
-{
-	double c = cos(phi * (M_PI / 180)), s = sin(phi * (M_PI / 180));
-	double k = 1 / sqrt(1 + slope * slope);
-
-	o->phi = phi;
-	o->height = z;
-	o->pos[0] = rho * c;
-	o->pos[1] = rho * s;
-	o->pos[2] = z;
-	/* w the outward normal, u down the generating line (away from
-	 * the tip at the top), v = w x u turning counter-clockwise. */
-	o->w[0] = c * k;
-	o->w[1] = s * k;
-	o->w[2] = -slope * k;
-	o->u[0] = -slope * c * k;
-	o->u[1] = -slope * s * k;
-	o->u[2] = -k;
-}
-
 int
 cylindrical_run(const struct scene *sc, struct result *res)
 {
@@ -257,7 +235,9 @@ cylindrical_run(const struct scene *sc, struct result *res)
 		    (rho[b] - rho[a]) / (z[b] - z[a]) : 0;
 		struct organ *o = &res->organs[k];
 
-		place(o, angle_mod360((double)k, p.alpha), rho[k], z[k], slope);
+		/* The tip is at the top: away from it is down, (-drho/dz, -1). */
+		frame_revolution(o, angle_mod360((double)k, p.alpha), rho[k], z[k],
+		    -slope, -1);
 		o->radius = p.d / 2 * rho[k];
 		o->scale = o->radius;
 	}

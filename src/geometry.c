@@ -24,6 +24,28 @@ angle_mod360(double n, double deg)
 	return a;
 }
 
+void
+frame_revolution(struct organ *o, double phi, double rho, double z,
+    double t_rho, double t_z)
+{
+	double c = cos(phi * (M_PI / 180)), s = sin(phi * (M_PI / 180));
+	double k = 1 / hypot(t_rho, t_z);
+
+	t_rho *= k;
+	t_z *= k;
+	o->phi = phi;
+	o->height = z;
+	o->pos[0] = rho * c;
+	o->pos[1] = rho * s;
+	o->pos[2] = z;
+	o->u[0] = t_rho * c;
+	o->u[1] = t_rho * s;
+	o->u[2] = t_z;
+	o->w[0] = -t_z * c;
+	o->w[1] = -t_z * s;
+	o->w[2] = t_rho;
+}
+
 /*
  * The opposed pair of contact parastichies through organ k: the index
  * difference to its nearest earlier neighbour, and to the nearest

@@ -17,6 +17,16 @@ int	organs_apply(const struct scene *, struct result *);
 /* The contact parastichy numbers seen from organ k, sorted; 0 if none. */
 void	parastichies(const struct result *, size_t k, int pair[2]);
 
+/*
+ * Place an organ on a surface of revolution about Z: at angle phi
+ * (degrees), radius rho, height z, where the generating curve's tangent
+ * pointing away from the tip is (t_rho, t_z).  Then u is that tangent,
+ * w the outward normal (the tangent turned a right angle towards the
+ * outside), and v = w x u turns counter-clockwise.
+ */
+void	frame_revolution(struct organ *, double phi, double rho, double z,
+	    double t_rho, double t_z);
+
 /* n * deg reduced to [0, 360), without the rounding of the product. */
 double	angle_mod360(double n, double deg);
 

@@ -64,23 +64,11 @@ planar_run(const struct scene *sc, struct result *res)
 		/* m: organ 0 takes its area per organ from n = 1. */
 		double m = n > 1 ? (double)n : 1, pm = power(m, p->exponent);
 		double rho = p->inner + (n > 0 ? c * pm : 0);
-		double cs = cos(phi * (M_PI / 180)), sn = sin(phi * (M_PI / 180));
-		double slope = -kdome * rho, k = 1 / sqrt(1 + slope * slope);
 		double z = rim > 0 ? p->dome * (1 - (rho / rim) * (rho / rim)) :
 		    p->dome;
 
-		o->phi = phi;
-		o->height = z;
-		o->pos[0] = rho * cs;
-		o->pos[1] = rho * sn;
-		o->pos[2] = z;
-		/* u outward along the surface, w its normal, v = w x u. */
-		o->u[0] = cs * k;
-		o->u[1] = sn * k;
-		o->u[2] = slope * k;
-		o->w[0] = -slope * cs * k;
-		o->w[1] = -slope * sn * k;
-		o->w[2] = k;
+		/* The tip is the centre: away from it is outward, (1, dz/drho). */
+		frame_revolution(o, phi, rho, z, 1, -kdome * rho);
 		/* Area per organ d(pi rho^2)/dn shared as hexagons. */
 		o->radius = sqrt(M_PI * (p->inner + c * pm) *
 		    (c * p->exponent * pm / m) / sqrt(3.0));
