@@ -33,6 +33,7 @@ px --csv -o "$OUT/head.csv" "$OUT/head.cfg"
 px --blender -o "$OUT/head.py" "$OUT/head.cfg"
 px --blender --blender-objects -o "$OUT/head-obj.py" "$OUT/head.cfg"
 
+# Blender depends on python3, so it is here whenever Blender is.
 try "the script is Python that names organs only as data" python3 -c '
 import ast, sys
 tree = ast.parse(open(sys.argv[1]).read())

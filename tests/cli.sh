@@ -93,7 +93,9 @@ line' 'tri"""ple' 'hash#brace}' "$(printf 'lat\351in')"; do
 	px --pov -o "$OUT/weird.inc" "$f" && px --blender -o "$OUT/weird.py" "$f"
 	rc=$?
 	assert "both written" '[ $rc -eq 0 ]'
-	assert "Python parses it" 'python3 -c "import ast, sys; ast.parse(open(sys.argv[1], \"rb\").read())" $OUT/weird.py'
+	if command -v python3 >/dev/null; then
+		assert "Python parses it" 'python3 -c "import ast, sys; ast.parse(open(sys.argv[1], \"rb\").read())" $OUT/weird.py'
+	fi
 	assert "only safe characters reach the headers" '[ -z "$(grep -h " from " $OUT/weird.inc $OUT/weird.py | head -2 | sed "s/.* from //" | tr -d "A-Za-z0-9._ ()-")" ]'
 	end
 done
