@@ -29,6 +29,8 @@ const struct writer writers[] = {
 	  "a Python script that builds the structure in Blender" },
 	{ "csv", csv_write, NULL, NULL, NULL,
 	  "one line per organ: position, frame, scale" },
+	{ "svg", svg_write, NULL, NULL, NULL,
+	  "a picture: a circle per organ, from above or unrolled" },
 	{ "info", info_write, NULL, NULL, NULL,
 	  "key: value facts about the result" },
 	{ NULL, NULL, NULL, NULL, NULL, NULL }

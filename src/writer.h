@@ -28,6 +28,7 @@ extern const struct writer writers[];
 
 writer_fn csv_write;
 writer_fn info_write;
+writer_fn svg_write;
 
 extern const struct tmpl_var pov_vars[];
 int	pov_check(const struct scene *);

@@ -11,6 +11,19 @@ for cfg in scenes/*.cfg; do
 	end
 done
 
+for cfg in scenes/*.cfg; do
+	n=$(px --info "$cfg" | sed -n "s/^count: //p")
+	k=$(px --info "$cfg" | sed -n "s/^objects: //p" | wc -w)
+	try "scene $cfg draws as SVG: one circle per organ, a colour per object" px --svg "$cfg"
+	assert "exit 0" '[ $rc -eq 0 ]'
+	assert "$n circles" '[ $(grep -c "^<circle " $OUT/stdout) -eq $n ]'
+	assert "$k colours" '[ $(grep -o "fill=\"hsl([0-9]*" $OUT/stdout | sort -u | wc -l) -eq $k ]'
+	if command -v python3 >/dev/null; then
+		assert "well-formed XML" 'python3 -c "import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])" $OUT/stdout'
+	fi
+	end
+done
+
 # objects CSV FROM TO NAME...: organs FROM..TO are all among NAMES.
 objects() {
 	awk -F, -v from="$2" -v to="$3" -v names="$4" '
