@@ -66,6 +66,13 @@ spans_resolve(const struct scene *sc, long long N, size_t *nspans)
 			free(sp);
 			return NULL;
 		}
+		if (next > prev + 1 && n == 0) {
+			diag(ST_SCENE, sc->file, sc->ranges[0].line, 0,
+			    "organs 0 to %lld are in no organs entry: every "
+			    "entry starts after the last organ", N - 1);
+			free(sp);
+			return NULL;
+		}
 		if (next > prev + 1) {
 			const struct organ_range *at = i < n ? sp[i].rg :
 			    sp[i - 1].rg;
