@@ -90,12 +90,6 @@ struct parser {
 	struct expr_error *err;
 };
 
-const char *
-expr_var_name(enum expr_var v)
-{
-	return var_names[v];
-}
-
 /* SplitMix64's finaliser: a good 64-bit mix, the same on every machine. */
 static uint64_t
 mix64(uint64_t z)

@@ -49,7 +49,6 @@ int		 expr_is_constant(const struct expr *, double *value);
 enum expr_status expr_eval(struct expr *, const struct expr_env *,
 		    double *result);
 void		 expr_free(struct expr *);
-const char	*expr_var_name(enum expr_var);
 
 /* The uniform number in [0, 1) that rand(k) gives organ n. */
 double		 expr_rand(uint64_t seed, long long n, long long k);

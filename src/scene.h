@@ -76,7 +76,6 @@ struct scene {
 	int		*given;		/* per table row: line, or 0 */
 };
 
-int	 ident_valid(const char *);
 int	 scene_load(struct scene *, const char *path);
 int	 scene_load_buffer(struct scene *, const char *file,
 	    const char *text, size_t len);

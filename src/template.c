@@ -75,15 +75,21 @@ static void put_version(struct sink *s, const struct tmpl_ctx *c)
 static void put_object_count(struct sink *s, const struct tmpl_ctx *c)
 { sink_uint(s, c->r->nobjects); }
 
-/* The scene file's base name, reduced to characters safe anywhere. */
+/*
+ * The scene file's base name, reduced to characters that are safe in
+ * any comment or string: letters, digits, dot, dash, underscore.
+ */
 static void
 put_scene(struct sink *s, const struct tmpl_ctx *c)
 {
 	const char *base = strrchr(c->sc->file, '/');
 
-	for (base = base ? base + 1 : c->sc->file; *base != '\0'; base++)
-		sink_putc(s, isalnum((unsigned char)*base) && !(*base & 0x80) ?
-		    *base : strchr(".-_", *base) && *base ? *base : '_');
+	for (base = base ? base + 1 : c->sc->file; *base != '\0'; base++) {
+		unsigned char ch = (unsigned char)*base;
+		int safe = (ch < 0x80 && isalnum(ch)) || strchr(".-_", ch);
+
+		sink_putc(s, safe ? (char)ch : '_');
+	}
 }
 
 static size_t
