@@ -1,5 +1,6 @@
 #!/bin/sh
-# run.sh SECONDS - run each fuzz harness for SECONDS on its corpus in
+# run.sh SECONDS [HARNESS...] - run each fuzz harness (all three unless
+# named) for SECONDS on its corpus in
 # build-fuzz/corpus/NAME, seeded from the scenes, test inputs and
 # templates; crashes are written to build-fuzz/crash-NAME-*.
 set -u
@@ -7,7 +8,8 @@ t=${1:-60}
 # libconfig 1.5 leaks on one kind of syntax error: not ours.
 LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
 export LSAN_OPTIONS
-for f in fuzz_scene fuzz_expr fuzz_template; do
+[ $# -gt 0 ] && shift
+for f in ${*:-fuzz_scene fuzz_expr fuzz_template}; do
 	c=build-fuzz/corpus/$f
 	mkdir -p "$c"
 	case $f in
