@@ -170,22 +170,12 @@ radius_at(const struct scene *sc, struct expr_env *env, long long k,
 	env->var[V_N] = (double)k;
 	env->var[V_COUNT] = (double)N;
 	env->var[V_T] = N > 1 ? (double)k / (double)(N - 1) : 0;
-	switch (expr_eval(es->e, env, rho)) {
-	case EXPR_OK:
-		if (*rho > 0)
-			return 0;
-		diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius is "
-		    "%.9g at organ %lld; it must be positive", *rho, k);
+	if (scene_eval(sc, es, "cylindrical.radius", "organ", env, rho) != 0)
 		return -1;
-	case EXPR_DIVZERO:
-		diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius: "
-		    "division by zero at organ %lld", k);
-		return -1;
-	case EXPR_NOTFINITE:
-		break;
-	}
-	diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius is not a "
-	    "finite number at organ %lld", k);
+	if (*rho > 0)
+		return 0;
+	diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius is %.9g at "
+	    "organ %lld; it must be positive", *rho, k);
 	return -1;
 }
 

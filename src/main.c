@@ -39,6 +39,7 @@ const struct writer writers[] = {
 static model_fn *const models[MODEL__MAX] = {
 	[MODEL_PLANAR] = planar_run,
 	[MODEL_CYLINDRICAL] = cylindrical_run,
+	[MODEL_COLLISION] = collision_run,
 };
 
 struct args {

@@ -10,6 +10,16 @@ typedef int model_fn(const struct scene *, struct result *res);
 
 model_fn planar_run;
 model_fn cylindrical_run;
+model_fn collision_run;
+
+/* The collision model; brute: the slow reference placement, for tests. */
+int	collision_place(const struct scene *, struct result *, int brute);
+
+/*
+ * Called now and then by a long-running model with the count placed so
+ * far, and once with last set at the end; NULL: nobody is watching.
+ */
+extern void (*model_progress)(long long done, int last);
 
 /* Apply the scene's organs entries to placed organs; 0 or -1. */
 int	organs_apply(const struct scene *, struct result *);

@@ -6,6 +6,7 @@
  * collision model finds its own).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "diag.h"
@@ -140,23 +141,14 @@ static int
 eval(const struct scene *sc, const struct expr_setting *es,
     const char *what, struct expr_env *env, double def, double *v)
 {
+	char path[32];
+
 	if (es->e == NULL) {
 		*v = def;
 		return 0;
 	}
-	switch (expr_eval(es->e, env, v)) {
-	case EXPR_OK:
-		return 0;
-	case EXPR_DIVZERO:
-		diag(ST_SCENE, sc->file, es->line, 0, "organs.%s: division "
-		    "by zero at organ %lld", what, env->n);
-		return -1;
-	case EXPR_NOTFINITE:
-		diag(ST_SCENE, sc->file, es->line, 0, "organs.%s is not a "
-		    "finite number at organ %lld", what, env->n);
-		return -1;
-	}
-	return -1;
+	snprintf(path, sizeof(path), "organs.%s", what);
+	return scene_eval(sc, es, path, "organ", env, v);
 }
 
 /* Rotate a towards b by deg degrees in their plane: both stay unit. */

@@ -105,7 +105,9 @@ range_words(const struct row *r, char *buf, size_t sz)
 {
 	const char *lo = r->flags & F_LO_OPEN ? "greater than" : "at least";
 
-	if (isinf(r->hi))
+	if (isinf(r->hi) && isinf(r->lo))
+		snprintf(buf, sz, "must be finite");
+	else if (isinf(r->hi))
 		snprintf(buf, sz, "must be %s %.15g", lo, r->lo);
 	else if (r->flags & F_LO_OPEN)
 		snprintf(buf, sz, "must be greater than %.15g and at most "
@@ -216,6 +218,51 @@ set_ints(struct load *L, const config_setting_t *s, const struct row *r,
 		dst->v[i] = (int)v;
 	}
 	dst->n = n;
+	return 0;
+}
+
+/* ((x0, y0), (x1, y1), ...): finite numbers in the row's range. */
+static int
+set_points(struct load *L, const config_setting_t *s, const struct row *r,
+    struct point_list *dst)
+{
+	int n = config_setting_length(s);
+
+	if (config_setting_type(s) != CONFIG_TYPE_LIST &&
+	    config_setting_type(s) != CONFIG_TYPE_ARRAY) {
+		err_at(L, s, "%s must be a list of points: ((1, 0), (0.7, 0.2), "
+		    "(0.3, 0.4), (0, 0.5))", r->path);
+		return -1;
+	}
+	if (n > PROFILE_POINTS_MAX) {
+		err_at(L, s, "%s has %d points, more than %d", r->path, n,
+		    PROFILE_POINTS_MAX);
+		return -1;
+	}
+	free(dst->p);
+	dst->p = xcalloc((size_t)n + 1, sizeof(*dst->p));
+	dst->n = n;
+	for (int i = 0; i < n; i++) {
+		config_setting_t *e = config_setting_get_elem(s, (unsigned)i);
+
+		if ((config_setting_type(e) != CONFIG_TYPE_LIST &&
+		    config_setting_type(e) != CONFIG_TYPE_ARRAY) ||
+		    config_setting_length(e) != 2) {
+			err_at(L, e, "%s: point %d must be a pair (radius, "
+			    "height)", r->path, i + 1);
+			return -1;
+		}
+		for (int k = 0; k < 2; k++) {
+			struct row any = *r;
+
+			/* The height may be negative; the radius may not. */
+			if (k == 1)
+				any.lo = -HUGE_VAL;
+			if (set_number(L, config_setting_get_elem(e,
+			    (unsigned)k), &any, &dst->p[i][k]) < 0)
+				return -1;
+		}
+	}
 	return 0;
 }
 
@@ -394,6 +441,8 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 		return set_weights(L, s, r, base);
 	case T_INTS:
 		return set_ints(L, s, r, dst);
+	case T_POINTS:
+		return set_points(L, s, r, dst);
 	case T_RANGES:
 		return load_ranges(L, s);
 	}
@@ -613,6 +662,9 @@ scene_free(struct scene *sc)
 	}
 	free(sc->ranges);
 	expr_free(sc->cyl.radius.e);
+	expr_free(sc->coll.radius.e);
+	expr_free(sc->coll.epsilon.e);
+	free(sc->coll.profile.p);
 	free(sc->objects);
 	free(sc->given);
 	*sc = (struct scene){0};
@@ -650,4 +702,24 @@ scene_error(const struct scene *sc, const char *path, const char *fmt, ...)
 	vsnprintf(msg, sizeof(msg), fmt, ap);
 	va_end(ap);
 	diag(ST_SCENE, sc->file, line > 0 ? line : 1, 0, "%s", msg);
+}
+
+/* Evaluate the setting at path for env->n, naming it ("organ 5") on error. */
+int
+scene_eval(const struct scene *sc, const struct expr_setting *es,
+    const char *path, const char *item, struct expr_env *env, double *v)
+{
+	switch (expr_eval(es->e, env, v)) {
+	case EXPR_OK:
+		return 0;
+	case EXPR_DIVZERO:
+		diag(ST_SCENE, sc->file, es->line, 0, "%s: division by zero at "
+		    "%s %lld", path, item, env->n);
+		return -1;
+	case EXPR_NOTFINITE:
+		break;
+	}
+	diag(ST_SCENE, sc->file, es->line, 0, "%s is not a finite number at "
+	    "%s %lld", path, item, env->n);
+	return -1;
 }

@@ -37,6 +37,34 @@ struct int_list {
 	int		 n;
 };
 
+/* The collision model's receptacle presets (collision.receptacle.shape). */
+enum shape {
+	SHAPE_DISK,
+	SHAPE_CONE,
+	SHAPE_HEMISPHERE,
+	SHAPE_SPHERE,
+	SHAPE_CYLINDER,
+	SHAPE_ELLIPSOID,
+	SHAPE_CAP
+};
+
+#define PROFILE_POINTS_MAX	3001	/* 1000 Bezier segments */
+
+/* A list of (radius, height) points: the receptacle's profile. */
+struct point_list {
+	double		(*p)[2];	/* owned */
+	int		 n;
+};
+
+struct coll_params {
+	struct point_list profile;
+	int		 shape;		/* enum shape, if given */
+	double		 width;		/* receptacle.radius of a preset */
+	double		 height;	/* receptacle.height of a preset */
+	struct expr_setting radius;	/* of primordium n */
+	struct expr_setting epsilon;	/* how far t may fall back */
+};
+
 struct cyl_params {
 	struct expr_setting radius;	/* of the cylinder; may vary */
 	struct int_list	 parastichies;
@@ -69,6 +97,7 @@ struct scene {
 	long long	 seed;
 	struct planar_params planar;
 	struct cyl_params cyl;
+	struct coll_params coll;
 	struct organ_range *ranges;	/* owned */
 	size_t		 nranges;
 	const char	**objects;	/* distinct organ object names */
@@ -87,6 +116,9 @@ void	 scene_error(const struct scene *, const char *path,
 	    __attribute__((format(printf, 3, 4)))
 #endif
 	    ;
+int	 scene_eval(const struct scene *, const struct expr_setting *,
+	    const char *path, const char *item, struct expr_env *,
+	    double *v);
 const char *scene_model_name(int model);
 void	 scene_settings_list(FILE *);
 

@@ -71,6 +71,37 @@ const struct row rows[] = {
 	{ .path = "cylindrical.length", .type = T_FLOAT, .models = CYL,
 	  .off = S(cyl.length), .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN,
 	  .defstr = "none", .doc = "length of the structure instead of count" },
+	{ .path = "collision", .type = T_GROUP, .models = COLL,
+	  .doc = "settings of the collision model" },
+	{ .path = "collision.receptacle", .type = T_GROUP, .models = COLL,
+	  .doc = "the surface of revolution the primordia sit on" },
+	{ .path = "collision.receptacle.profile", .type = T_POINTS,
+	  .models = COLL, .off = S(coll.profile), .lo = 0, .hi = HUGE_VAL,
+	  .defstr = "none",
+	  .doc = "3k+1 (radius, height) control points of k cubic Bezier "
+	  "segments, base first" },
+	{ .path = "collision.receptacle.shape", .type = T_CHOICE,
+	  .models = COLL, .off = S(coll.shape), .defstr = "none",
+	  .words = "disk cone hemisphere sphere cylinder ellipsoid cap",
+	  .doc = "a preset receptacle instead of a profile" },
+	{ .path = "collision.receptacle.radius", .type = T_FLOAT,
+	  .models = COLL, .off = S(coll.width), .lo = 0, .hi = HUGE_VAL,
+	  .flags = F_LO_OPEN, .def = 1, .defstr = "1",
+	  .doc = "radius of the preset at its widest" },
+	{ .path = "collision.receptacle.height", .type = T_FLOAT,
+	  .models = COLL, .off = S(coll.height), .lo = 0, .hi = HUGE_VAL,
+	  .flags = F_LO_OPEN, .defstr = "per shape",
+	  .doc = "height of the cone, cylinder, ellipsoid or cap" },
+	{ .path = "collision.radius", .type = T_EXPR, .models = COLL,
+	  .off = S(coll.radius), .defstr = "none",
+	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .doc = "radius of primordium n" },
+	{ .path = "collision.epsilon", .type = T_EXPR, .models = COLL,
+	  .off = S(coll.epsilon), .defstr = "none",
+	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T) |
+	  EXPR_VAR(V_R),
+	  .doc = "arc length t may fall back below the last primordium; "
+	  "\"r\": its radius" },
 	{ .path = "organs", .type = T_RANGES,
 	  .doc = "list of organ entries, each an index range" },
 	{ .path = "organs.from", .type = T_INT, .where = IN_RANGE,
@@ -127,7 +158,7 @@ scene_settings_list(FILE *fp)
 {
 	static const char *const tn[] = {
 		"group", "integer", "number", "identifier", "string",
-		"expression", "names", "numbers", "integers", "list"
+		"expression", "names", "numbers", "integers", "points", "list"
 	};
 
 	for (size_t i = 0; i < nrows; i++)

@@ -16,6 +16,7 @@ enum type {
 	T_NAMES,	/* an identifier or an array of them (variants) */
 	T_WEIGHTS,	/* an array of numbers, one per variant */
 	T_INTS,		/* an array of 2 or 3 positive integers */
+	T_POINTS,	/* a list of (x, y) pairs of numbers */
 	T_RANGES	/* the organs list: struct organ_range entries */
 };
 
@@ -29,6 +30,7 @@ enum where {
 
 #define PLANAR		(1u << MODEL_PLANAR)
 #define CYL		(1u << MODEL_CYLINDRICAL)
+#define COLL		(1u << MODEL_COLLISION)
 
 struct row {
 	const char	*path;	/* dotted, e.g. "planar.scale" */

@@ -1,0 +1,447 @@
+/*
+ * curve.c - the receptacle's generating curve, and where along it a
+ * point leaves a disk.
+ *
+ * The collision model needs, for a new primordium sliding up its
+ * generating curve, the first parameter at which it no longer overlaps
+ * an earlier one.  In the meridian plane of the new primordium that is
+ * where the curve leaves a disk: the squared distance
+ * g(u) = |p(u) - q|^2, a polynomial of degree 6 per Bezier segment,
+ * crosses S2.  Sampling, or the paper's bisection, can step over a
+ * gap; here each piece of the curve is bounded by the box of its
+ * control points, and where g is provably convex on a piece (|p''|
+ * |p - q| < |p'|^2) the crossing is unique and Newton's method finds it
+ * from the free side.  Pieces that are neither clearly inside, clearly
+ * outside nor convex are halved (de Casteljau), which only happens for
+ * disks as large as the curve's own bends.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "curve.h"
+#include "mem.h"
+
+#define PIECES_PER_CURVE	512	/* pieces along a smooth profile */
+#define PIECES_MAX		8192
+
+/* 8-point Gauss-Legendre nodes and weights on [-1, 1]. */
+static const double gl_x[4] = {
+	0.1834346424956498, 0.5255324099163290,
+	0.7966664774136267, 0.9602898564975363
+};
+static const double gl_w[4] = {
+	0.3626837833783620, 0.3137066458778873,
+	0.2223810344533745, 0.1012285362903763
+};
+
+static void
+to_power(struct piece *p)
+{
+	for (int k = 0; k < 2; k++) {
+		double b0 = p->b[0][k], b1 = p->b[1][k], b2 = p->b[2][k],
+		    b3 = p->b[3][k];
+
+		p->c[0][k] = b0;
+		p->c[1][k] = 3 * (b1 - b0);
+		p->c[2][k] = 3 * (b2 - 2 * b1 + b0);
+		p->c[3][k] = b3 - 3 * b2 + 3 * b1 - b0;
+	}
+}
+
+static inline void
+piece_eval(const struct piece *p, double u, double x[2], double d[2])
+{
+	for (int k = 0; k < 2; k++) {
+		x[k] = ((p->c[3][k] * u + p->c[2][k]) * u + p->c[1][k]) * u +
+		    p->c[0][k];
+		if (d != NULL)
+			d[k] = (3 * p->c[3][k] * u + 2 * p->c[2][k]) * u +
+			    p->c[1][k];
+	}
+}
+
+/* Split b at u: the part before into lo, after into hi (either NULL). */
+static void
+bez_split(const double b[4][2], double u, double lo[4][2], double hi[4][2])
+{
+	for (int k = 0; k < 2; k++) {
+		double a = b[0][k] + (b[1][k] - b[0][k]) * u;
+		double m = b[1][k] + (b[2][k] - b[1][k]) * u;
+		double c = b[2][k] + (b[3][k] - b[2][k]) * u;
+		double am = a + (m - a) * u, mc = m + (c - m) * u;
+		double x = am + (mc - am) * u;
+
+		if (lo != NULL) {
+			lo[0][k] = b[0][k];
+			lo[1][k] = a;
+			lo[2][k] = am;
+			lo[3][k] = x;
+		}
+		if (hi != NULL) {
+			hi[0][k] = x;
+			hi[1][k] = mc;
+			hi[2][k] = c;
+			hi[3][k] = b[3][k];
+		}
+	}
+}
+
+/* The part of b between u0 and u1. */
+static void
+bez_sub(const double b[4][2], double u0, double u1, double out[4][2])
+{
+	double tmp[4][2];
+
+	bez_split(b, u1, tmp, NULL);
+	if (u1 > 0)
+		bez_split((const double (*)[2])tmp, u0 / u1, NULL, out);
+	else
+		memcpy(out, tmp, sizeof(tmp));
+}
+
+/* Arc length of piece p from 0 to u. */
+static double
+piece_length(const struct piece *p, double u)
+{
+	double sum = 0, h = u / 2;
+
+	for (int i = 0; i < 4; i++)
+		for (int sgn = -1; sgn <= 1; sgn += 2) {
+			double x[2], d[2];
+
+			piece_eval(p, h + sgn * h * gl_x[i], x, d);
+			sum += gl_w[i] * hypot(d[0], d[1]);
+		}
+	return sum * h;
+}
+
+static double
+seg_polylen(const double (*b)[2])
+{
+	double len = 0;
+
+	for (int i = 0; i < 3; i++)
+		len += hypot(b[i + 1][0] - b[i][0], b[i + 1][1] - b[i][1]);
+	return len;
+}
+
+int
+curve_init(struct curve *cv, const double (*pts)[2], int npts)
+{
+	int nseg = (npts - 1) / 3;
+	double total = 0, s = 0;
+	size_t n = 0, *per = xcalloc((size_t)nseg, sizeof(*per));
+
+	memset(cv, 0, sizeof(*cv));
+	for (int k = 0; k < nseg; k++)
+		total += seg_polylen(pts + 3 * k);
+	if (!(total > 0) || !isfinite(total)) {
+		free(per);
+		return -1;
+	}
+	for (int k = 0; k < nseg; k++) {
+		double want = ceil(seg_polylen(pts + 3 * k) / total *
+		    PIECES_PER_CURVE);
+
+		per[k] = want < 1 ? 1 : (size_t)want;
+		n += per[k];
+	}
+	/* Many segments: fewer pieces each, never below one. */
+	while (n > PIECES_MAX) {
+		n = 0;
+		for (int k = 0; k < nseg; k++) {
+			per[k] = (per[k] + 1) / 2;
+			n += per[k];
+		}
+	}
+	cv->pc = xcalloc(n, sizeof(*cv->pc));
+	cv->tmax = nseg;
+	for (int k = 0; k < nseg; k++)
+		for (size_t j = 0; j < per[k]; j++) {
+			struct piece *p = &cv->pc[cv->npc++];
+			double u0 = (double)j / (double)per[k];
+			double u1 = (double)(j + 1) / (double)per[k];
+
+			bez_sub((const double (*)[2])(pts + 3 * k), u0, u1,
+			    p->b);
+			to_power(p);
+			p->t0 = k + u0;
+			p->t1 = k + u1;
+			p->s0 = s;
+			s += piece_length(p, 1);
+			for (int i = 0; i < 4; i++)
+				if (p->b[i][0] > cv->rho_max)
+					cv->rho_max = p->b[i][0];
+		}
+	free(per);
+	cv->length = s;
+	if (!(s > 0)) {
+		curve_free(cv);
+		return -1;
+	}
+	return 0;
+}
+
+void
+curve_free(struct curve *cv)
+{
+	free(cv->pc);
+	memset(cv, 0, sizeof(*cv));
+}
+
+/* The piece holding t, and t as that piece's u. */
+static size_t
+piece_find(const struct curve *cv, double t, double *u)
+{
+	size_t lo = 0, hi = cv->npc - 1;
+
+	while (lo < hi) {
+		size_t mid = (lo + hi + 1) / 2;
+
+		if (cv->pc[mid].t0 <= t)
+			lo = mid;
+		else
+			hi = mid - 1;
+	}
+	*u = (t - cv->pc[lo].t0) / (cv->pc[lo].t1 - cv->pc[lo].t0);
+	if (*u < 0)
+		*u = 0;
+	else if (*u > 1)
+		*u = 1;
+	return lo;
+}
+
+void
+curve_eval(const struct curve *cv, double t, double p[2], double d[2])
+{
+	double u;
+	const struct piece *pc = &cv->pc[piece_find(cv, t, &u)];
+
+	piece_eval(pc, u, p, d);
+	if (d != NULL) {
+		d[0] /= pc->t1 - pc->t0;
+		d[1] /= pc->t1 - pc->t0;
+	}
+}
+
+double
+curve_s(const struct curve *cv, double t)
+{
+	double u;
+	const struct piece *pc = &cv->pc[piece_find(cv, t, &u)];
+
+	return pc->s0 + piece_length(pc, u);
+}
+
+double
+curve_t(const struct curve *cv, double s)
+{
+	size_t lo = 0, hi = cv->npc - 1;
+	const struct piece *pc;
+	double a = 0, b = 1, u, want;
+
+	if (s <= 0)
+		return 0;
+	if (s >= cv->length)
+		return cv->tmax;
+	while (lo < hi) {
+		size_t mid = (lo + hi + 1) / 2;
+
+		if (cv->pc[mid].s0 <= s)
+			lo = mid;
+		else
+			hi = mid - 1;
+	}
+	pc = &cv->pc[lo];
+	want = s - pc->s0;
+	/* Newton on the arc length, kept inside a bracket. */
+	u = 0.5;
+	for (int i = 0; i < 60 && b - a > 1e-15; i++) {
+		double x[2], d[2], f = piece_length(pc, u) - want, fp, nu;
+
+		if (f < 0)
+			a = u;
+		else
+			b = u;
+		piece_eval(pc, u, x, d);
+		fp = hypot(d[0], d[1]);
+		nu = fp > 0 ? u - f / fp : -1;
+		if (!(nu > a && nu < b))
+			nu = (a + b) / 2;
+		if (fabs(nu - u) < 1e-16)
+			break;
+		u = nu;
+	}
+	return pc->t0 + u * (pc->t1 - pc->t0);
+}
+
+/* Nearest and farthest squared distance from q to the box of b. */
+static void
+box_dist(const double b[4][2], const double q[2], double *near2,
+    double *far2)
+{
+	double n2 = 0, f2 = 0;
+
+	for (int k = 0; k < 2; k++) {
+		double lo = b[0][k], hi = b[0][k], dn, df;
+
+		for (int i = 1; i < 4; i++) {
+			if (b[i][k] < lo)
+				lo = b[i][k];
+			if (b[i][k] > hi)
+				hi = b[i][k];
+		}
+		dn = q[k] < lo ? lo - q[k] : q[k] > hi ? q[k] - hi : 0;
+		df = fmax(fabs(q[k] - lo), fabs(q[k] - hi));
+		n2 += dn * dn;
+		f2 += df * df;
+	}
+	*near2 = n2;
+	*far2 = f2;
+}
+
+/* Squared distance from the origin to segment ab. */
+static double
+seg_dist2(const double a[2], const double b[2])
+{
+	double ab[2] = { b[0] - a[0], b[1] - a[1] };
+	double len2 = ab[0] * ab[0] + ab[1] * ab[1];
+	double s = len2 > 0 ? -(a[0] * ab[0] + a[1] * ab[1]) / len2 : 0;
+	double x, y;
+
+	s = s < 0 ? 0 : s > 1 ? 1 : s;
+	x = a[0] + s * ab[0];
+	y = a[1] + s * ab[1];
+	return x * x + y * y;
+}
+
+/*
+ * A radius within which g(u) = |p(u) - q|^2 is convex on b: g'' =
+ * 2 (|p'|^2 + (p - q).p'') >= 2 (m1^2 - m2 |p - q|), with m1 a lower
+ * bound of |p'| (the distance from 0 to the hodograph's control
+ * triangle) and m2 an upper bound of |p''| (linear: its end values).
+ */
+static double
+convex_radius(const double b[4][2])
+{
+	double d[3][2], m1, m2 = 0, cross[3];
+	int inside;
+
+	for (int i = 0; i < 3; i++)
+		for (int k = 0; k < 2; k++)
+			d[i][k] = 3 * (b[i + 1][k] - b[i][k]);
+	for (int i = 0; i < 2; i++) {
+		double x = 2 * (d[i + 1][0] - d[i][0]);
+		double y = 2 * (d[i + 1][1] - d[i][1]);
+
+		m2 = fmax(m2, hypot(x, y));
+	}
+	for (int i = 0; i < 3; i++) {
+		const double *a = d[i], *c = d[(i + 1) % 3];
+
+		cross[i] = a[0] * c[1] - a[1] * c[0];
+	}
+	inside = (cross[0] >= 0 && cross[1] >= 0 && cross[2] >= 0) ||
+	    (cross[0] <= 0 && cross[1] <= 0 && cross[2] <= 0);
+	if (inside)
+		return 0;
+	m1 = fmin(seg_dist2(d[0], d[1]), fmin(seg_dist2(d[1], d[2]),
+	    seg_dist2(d[2], d[0])));
+	return m2 > 0 ? m1 / m2 : HUGE_VAL;
+}
+
+static inline double
+gap(const struct piece *p, double u, const double q[2], double S2,
+    double *slope)
+{
+	double x[2], d[2];
+
+	piece_eval(p, u, x, d);
+	x[0] -= q[0];
+	x[1] -= q[1];
+	*slope = 2 * (x[0] * d[0] + x[1] * d[1]);
+	return x[0] * x[0] + x[1] * x[1] - S2;
+}
+
+/*
+ * The crossing of a convex g - S2 from below (at lo) to above (at hi):
+ * Newton's method from hi stays on the free side of a convex function,
+ * with bisection for when rounding says otherwise.
+ */
+static double
+crossing(const struct piece *p, double lo, double hi, const double q[2],
+    double S2)
+{
+	double fp, fh = gap(p, hi, q, S2, &fp), fph = fp;
+
+	for (int i = 0; i < 200; i++) {
+		double nu = fph > 0 ? hi - fh / fph : lo, f;
+
+		if (nu == hi)		/* converged: the step is below an ulp */
+			break;
+		if (!(nu > lo && nu < hi)) {
+			nu = lo + (hi - lo) / 2;
+			if (nu <= lo || nu >= hi)
+				break;
+		}
+		if ((f = gap(p, nu, q, S2, &fp)) < 0)
+			lo = nu;
+		else {
+			hi = nu;
+			fh = f;
+			fph = fp;
+		}
+	}
+	return hi;
+}
+
+/* The first u in [u0, u1] at which piece p (there b) is free; -1: none. */
+static double
+exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
+    const double q[2], double S2)
+{
+	double near2, far2, fp, k, half[2][4][2], mid;
+
+	box_dist(b, q, &near2, &far2);
+	if (near2 >= S2)
+		return u0;
+	if (far2 < S2)
+		return -1;
+	if (gap(p, u0, q, S2, &fp) >= 0)
+		return u0;
+	k = convex_radius(b);
+	if (far2 < k * k) {
+		if (gap(p, u1, q, S2, &fp) < 0)
+			return -1;
+		return crossing(p, u0, u1, q, S2);
+	}
+	mid = (u0 + u1) / 2;
+	if (mid <= u0 || mid >= u1)	/* as small as doubles go */
+		return gap(p, u1, q, S2, &fp) >= 0 ? u1 : -1;
+	bez_split(b, 0.5, half[0], half[1]);
+	if ((k = exit_sub(p, (const double (*)[2])half[0], u0, mid, q,
+	    S2)) >= 0)
+		return k;
+	return exit_sub(p, (const double (*)[2])half[1], mid, u1, q, S2);
+}
+
+double
+curve_exit(const struct curve *cv, double t, const double q[2], double S2)
+{
+	double u, b[4][2];
+	size_t i = piece_find(cv, t, &u);
+
+	for (; i < cv->npc; i++, u = 0) {
+		const struct piece *p = &cv->pc[i];
+		double e;
+
+		if (u > 0)
+			bez_sub((const double (*)[2])p->b, u, 1, b);
+		else
+			memcpy(b, p->b, sizeof(b));
+		if ((e = exit_sub(p, (const double (*)[2])b, u, 1, q, S2)) >= 0)
+			return p->t0 + e * (p->t1 - p->t0);
+	}
+	return HUGE_VAL;
+}

@@ -1,0 +1,176 @@
+/*
+ * receptacle.c - the collision model's receptacle as Bezier control
+ * points: the scene's own profile, checked, or one of the presets.
+ * Every preset stands on z = 0 with its base first: the rim of a disk,
+ * cone or cap, the bottom of a cylinder, the lower pole of a sphere or
+ * an ellipsoid.  Circular arcs are cubic Bezier arcs of at most 45
+ * degrees, within 5e-6 of the circle's radius.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mem.h"
+#include "receptacle.h"
+
+static const char *const shape_names[] = {
+	"disk", "cone", "hemisphere", "sphere", "cylinder", "ellipsoid", "cap"
+};
+
+/* A straight segment as one Bezier segment, thirds between. */
+static double (*line(double x0, double z0, double x1, double z1, int *n))[2]
+{
+	double (*p)[2] = xcalloc(4, sizeof(*p));
+
+	for (int i = 0; i < 4; i++) {
+		p[i][0] = x0 + (x1 - x0) * i / 3;
+		p[i][1] = z0 + (z1 - z0) * i / 3;
+	}
+	p[3][0] = x1;
+	p[3][1] = z1;
+	*n = 4;
+	return p;
+}
+
+/*
+ * The arc (a sin th, cz + b cos th) for th from th0 to th1 (radians, th
+ * measured from +z): the affine image of a circular arc, so the image
+ * of its Bezier arcs.  Each arc of angle D has its inner control points
+ * 4/3 tan(D/4) along the tangents.
+ */
+static double (*arc(double a, double b, double cz, double th0, double th1,
+    int *n))[2]
+{
+	int k = (int)ceil(fabs(th1 - th0) / (M_PI / 4) - 1e-9);
+	double (*p)[2], D, h;
+
+	if (k < 1)
+		k = 1;
+	D = (th1 - th0) / k;
+	h = 4.0 / 3 * tan(D / 4);
+	p = xcalloc((size_t)(3 * k + 1), sizeof(*p));
+	for (int i = 0; i <= k; i++) {
+		double th = th0 + D * i;
+		double x = sin(th), z = cos(th), dx = cos(th), dz = -sin(th);
+
+		if (i == k) {		/* land on the end exactly */
+			th = th1;
+			x = sin(th);
+			z = cos(th);
+			dx = cos(th);
+			dz = -sin(th);
+		}
+		p[3 * i][0] = a * x;
+		p[3 * i][1] = cz + b * z;
+		if (i > 0) {
+			p[3 * i - 1][0] = a * (x - h * dx);
+			p[3 * i - 1][1] = cz + b * (z - h * dz);
+		}
+		if (i < k) {
+			p[3 * i + 1][0] = a * (x + h * dx);
+			p[3 * i + 1][1] = cz + b * (z + h * dz);
+		}
+	}
+	/* The poles lie on the axis, not a rounding error beside it. */
+	for (int i = 0; i < 3 * k + 1; i++)
+		if (fabs(p[i][0]) < 1e-15 * a)
+			p[i][0] = 0;
+	*n = 3 * k + 1;
+	return p;
+}
+
+/* A spherical cap of base radius R and height H, rim to apex. */
+static double (*cap(double R, double H, int *n))[2]
+{
+	double rs = (R * R + H * H) / (2 * H);
+
+	return arc(rs, rs, H - rs, atan2(R, rs - H), 0, n);
+}
+
+static double
+default_height(int shape, double R)
+{
+	switch (shape) {
+	case SHAPE_CONE:
+		return R;
+	case SHAPE_CYLINDER:
+		return 2 * R;
+	case SHAPE_ELLIPSOID:
+		return 3 * R;
+	case SHAPE_CAP:
+		return R / 2;
+	default:
+		return 2 * R;
+	}
+}
+
+static double (*preset(const struct scene *sc, int *n))[2]
+{
+	double R = sc->coll.width, H;
+	int shape = sc->coll.shape;
+
+	if (scene_given(sc, "collision.receptacle.height") &&
+	    (shape == SHAPE_DISK || shape == SHAPE_HEMISPHERE ||
+	    shape == SHAPE_SPHERE)) {
+		scene_error(sc, "collision.receptacle.height", "shape \"%s\" "
+		    "has no height of its own; give only its radius",
+		    shape_names[shape]);
+		return NULL;
+	}
+	H = scene_given(sc, "collision.receptacle.height") ?
+	    sc->coll.height : default_height(shape, R);
+	switch (shape) {
+	case SHAPE_DISK:
+		return line(R, 0, 0, 0, n);
+	case SHAPE_CONE:
+		return line(R, 0, 0, H, n);
+	case SHAPE_CYLINDER:
+		return line(R, 0, R, H, n);
+	case SHAPE_HEMISPHERE:
+		return cap(R, R, n);
+	case SHAPE_CAP:
+		return cap(R, H, n);
+	case SHAPE_SPHERE:
+		return arc(R, R, R, M_PI, 0, n);
+	case SHAPE_ELLIPSOID:
+		return arc(R, H / 2, H / 2, M_PI, 0, n);
+	}
+	return NULL;
+}
+
+double (*receptacle_points(const struct scene *sc, int *n))[2]
+{
+	const struct point_list *pl = &sc->coll.profile;
+	int have_profile = scene_given(sc, "collision.receptacle.profile") != 0;
+	int have_shape = scene_given(sc, "collision.receptacle.shape") != 0;
+	double (*p)[2];
+
+	if (have_profile == have_shape) {
+		scene_error(sc, have_profile ? "collision.receptacle.shape" :
+		    "collision.receptacle", "give collision.receptacle.profile "
+		    "or collision.receptacle.shape, %s", have_profile ?
+		    "not both" : "one of them");
+		return NULL;
+	}
+	if (have_shape)
+		return preset(sc, n);
+	if (scene_given(sc, "collision.receptacle.radius") ||
+	    scene_given(sc, "collision.receptacle.height")) {
+		scene_error(sc, scene_given(sc, "collision.receptacle.radius") ?
+		    "collision.receptacle.radius" :
+		    "collision.receptacle.height", "collision.receptacle.radius "
+		    "and height size a preset shape; a profile has its own "
+		    "coordinates");
+		return NULL;
+	}
+	if (pl->n < 4 || (pl->n - 1) % 3 != 0) {
+		scene_error(sc, "collision.receptacle.profile", "the profile "
+		    "has %d point%s; cubic Bezier segments joined end to end "
+		    "take 3k+1 (4, 7, 10, ...)", pl->n, pl->n == 1 ? "" : "s");
+		return NULL;
+	}
+	p = xcalloc((size_t)pl->n, sizeof(*p));
+	memcpy(p, pl->p, (size_t)pl->n * sizeof(*p));
+	*n = pl->n;
+	return p;
+}

@@ -1,0 +1,231 @@
+/*
+ * test_collision.c - the collision model against its definition, on
+ * receptacles of every kind, with and without epsilon, with constant
+ * and varying radii:
+ *  - no two primordia overlap;
+ *  - every centre lies on the receptacle (measured against the Bezier
+ *    control points directly, not through the model's own curve code);
+ *  - primordium n sits at angle n alpha;
+ *  - without epsilon, every primordium above the base touches an
+ *    earlier one;
+ *  - every primordium is at the smallest feasible t: the exact walk
+ *    agrees with the brute-force reference, which tries every earlier
+ *    primordium at finely spaced t.
+ * Prints "ok"/"not ok" lines.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model.h"
+#include "receptacle.h"
+#include "scene.h"
+
+#define TOL	1e-9
+
+static int failures;
+
+static void
+check(int ok, const char *fmt, ...)
+{
+	va_list ap;
+
+	printf("%s - collision: ", ok ? "ok" : "not ok");
+	va_start(ap, fmt);
+	vprintf(fmt, ap);
+	va_end(ap);
+	putchar('\n');
+	failures += !ok;
+}
+
+static const struct {
+	const char	*what;
+	const char	*cfg;
+	int		 touching;	/* no epsilon: each touches one */
+} cases[] = {
+	{ "disk", "collision = { receptacle = { shape = \"disk\"; }; "
+	  "radius = 0.07; };", 1 },
+	{ "cone", "collision = { receptacle = { shape = \"cone\"; radius = 1; "
+	  "height = 1.5; }; radius = 0.08; };", 1 },
+	{ "hemisphere, varying radius", "collision = { receptacle = { shape = "
+	  "\"hemisphere\"; }; radius = \"0.09 - 0.04*t\"; }; count = 300;", 1 },
+	{ "sphere", "collision = { receptacle = { shape = \"sphere\"; "
+	  "radius = 0.6; }; radius = 0.07; };", 1 },
+	{ "cylinder", "collision = { receptacle = { shape = \"cylinder\"; "
+	  "radius = 0.5; height = 1.2; }; radius = 0.09; };", 1 },
+	{ "ellipsoid, epsilon r", "collision = { receptacle = { shape = "
+	  "\"ellipsoid\"; radius = 0.5; height = 1.6; }; radius = \"0.08 - "
+	  "0.05*t\"; epsilon = \"r\"; }; count = 250;", 0 },
+	{ "cap", "collision = { receptacle = { shape = \"cap\"; radius = 1; "
+	  "height = 0.3; }; radius = 0.075; };", 1 },
+	{ "two-segment profile, epsilon 0.05", "collision = { receptacle = { "
+	  "profile = ((0.8, 0), (0.9, 0.3), (0.7, 0.6), (0.5, 0.8), "
+	  "(0.3, 1.0), (0.1, 1.3), (0, 1.4)); }; radius = 0.06; "
+	  "epsilon = 0.05; };", 0 },
+	{ "spruce profile, decreasing radius", "collision = { receptacle = { "
+	  "profile = ((0.3, 0), (0.5, 0.2), (0.5, 0.8), (0.4, 1.2), "
+	  "(0.3, 1.6), (0.15, 2.0), (0, 2.1)); }; radius = \"0.07 - "
+	  "0.00005*n\"; }; count = 400;", 1 },
+	{ "disk, wide divergence", "divergence = 99.5; collision = { "
+	  "receptacle = { shape = \"disk\"; }; radius = 0.08; };", 1 },
+};
+
+static double
+bez_dist(const double (*p)[2], double u, double rho, double z)
+{
+	double v = 1 - u, x, y;
+
+	x = v * v * v * p[0][0] + 3 * v * v * u * p[1][0] +
+	    3 * v * u * u * p[2][0] + u * u * u * p[3][0];
+	y = v * v * v * p[0][1] + 3 * v * v * u * p[1][1] +
+	    3 * v * u * u * p[2][1] + u * u * u * p[3][1];
+	return hypot(x - rho, y - z);
+}
+
+/*
+ * Distance from (rho, z) to the Bezier curve of the control points:
+ * the nearest of 4000 samples per segment, then a ternary search on
+ * the samples either side.
+ */
+static double
+curve_dist(const double (*b)[2], int npts, double rho, double z)
+{
+	double best = HUGE_VAL, h = 1.0 / 4000;
+
+	for (int k = 0; k + 3 < npts; k += 3) {
+		const double (*p)[2] = b + k;
+		double bu = 0, bd = HUGE_VAL, lo, hi;
+
+		for (int i = 0; i <= 4000; i++) {
+			double d = bez_dist(p, i * h, rho, z);
+
+			if (d < bd) {
+				bd = d;
+				bu = i * h;
+			}
+		}
+		lo = fmax(bu - h, 0);
+		hi = fmin(bu + h, 1);
+		for (int i = 0; i < 200; i++) {
+			double a = lo + (hi - lo) / 3, c = hi - (hi - lo) / 3;
+
+			if (bez_dist(p, a, rho, z) < bez_dist(p, c, rho, z))
+				hi = c;
+			else
+				lo = a;
+		}
+		best = fmin(best, fmin(bd, bez_dist(p, (lo + hi) / 2, rho, z)));
+	}
+	return best;
+}
+
+static void
+properties(const char *what, const struct scene *sc, const struct result *res,
+    int touching)
+{
+	const struct organ *o = res->organs;
+	double worst_overlap = 0, worst_surface = 0, worst_angle = 0;
+	double worst_touch = 0, (*b)[2];
+	int npts;
+
+	b = receptacle_points(sc, &npts);
+	for (size_t i = 0; i < res->count; i++) {
+		double rho = hypot(o[i].pos[0], o[i].pos[1]), nearest = HUGE_VAL;
+
+		for (size_t j = 0; j < i; j++) {
+			double dx = o[i].pos[0] - o[j].pos[0];
+			double dy = o[i].pos[1] - o[j].pos[1];
+			double dz = o[i].pos[2] - o[j].pos[2];
+			double gap = sqrt(dx * dx + dy * dy + dz * dz) -
+			    o[i].radius - o[j].radius;
+
+			worst_overlap = fmax(worst_overlap, -gap);
+			nearest = fmin(nearest, gap);
+		}
+		worst_surface = fmax(worst_surface,
+		    curve_dist((const double (*)[2])b, npts, rho,
+		    o[i].pos[2]));
+		if (rho > 1e-6) {
+			double a = atan2(o[i].pos[1], o[i].pos[0]) * 180 / M_PI;
+			double want = angle_mod360((double)i, res->divergence);
+			double d = fmod(fabs(a - want), 360);
+
+			worst_angle = fmax(worst_angle, fmin(d, 360 - d));
+		}
+		/* Above the base: resting on an earlier primordium. */
+		if (touching && i > 0 && fabs(o[i].pos[2] - o[0].pos[2]) +
+		    fabs(rho - hypot(o[0].pos[0], o[0].pos[1])) > 1e-12)
+			worst_touch = fmax(worst_touch, nearest);
+	}
+	free(b);
+	check(res->count > 50, "%s: %zu primordia placed", what, res->count);
+	check(worst_overlap < TOL, "%s: no overlap (worst %.3g)", what,
+	    worst_overlap);
+	check(worst_surface < TOL, "%s: centres on the receptacle (worst "
+	    "%.3g)", what, worst_surface);
+	check(worst_angle < 1e-9, "%s: angle n alpha (worst %.3g degrees)",
+	    what, worst_angle);
+	if (touching)
+		check(worst_touch < TOL, "%s: each touches an earlier one "
+		    "(worst gap %.3g)", what, worst_touch);
+}
+
+/* The exact walk and the brute-force reference place the same. */
+static void
+agreement(const char *what, const struct scene *sc, const struct result *x)
+{
+	struct result br = { 0 };
+	double worst = 0;
+	size_t first = 0;
+
+	if (collision_place(sc, &br, 1) != 0) {
+		check(0, "%s: brute-force reference runs", what);
+		return;
+	}
+	check(br.count == x->count, "%s: same count, exact %zu, reference %zu",
+	    what, x->count, br.count);
+	for (size_t i = 0; i < x->count && i < br.count; i++) {
+		double d = 0;
+
+		for (int k = 0; k < 3; k++)
+			d = fmax(d, fabs(x->organs[i].pos[k] -
+			    br.organs[i].pos[k]));
+		if (d > worst) {
+			worst = d;
+			if (d > TOL && first == 0)
+				first = i;
+		}
+	}
+	if (first > 0)
+		check(0, "%s: exact walk and reference differ from primordium "
+		    "%zu on", what, first);
+	check(worst < TOL, "%s: exact walk places every primordium where the "
+	    "reference does (worst %.3g)", what, worst);
+	result_free(&br);
+}
+
+int
+main(void)
+{
+	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		char text[1024];
+		struct scene sc;
+		struct result res = { 0 };
+
+		snprintf(text, sizeof(text), "model = \"collision\";\n%s\n",
+		    cases[i].cfg);
+		if (scene_load_buffer(&sc, "test.cfg", text, strlen(text)) != 0 ||
+		    collision_place(&sc, &res, 0) != 0) {
+			check(0, "%s: scene loads and runs", cases[i].what);
+			scene_free(&sc);
+			continue;
+		}
+		properties(cases[i].what, &sc, &res, cases[i].touching);
+		agreement(cases[i].what, &sc, &res);
+		result_free(&res);
+		scene_free(&sc);
+	}
+	return failures != 0;
+}
