@@ -55,7 +55,7 @@ struct coll {
 	size_t		 used;
 	int32_t		*next;		/* per primordium: next in its cell */
 	struct cover	 cover;
-	int		 brute;
+	int		 nocover;	/* walk without the cover map */
 };
 
 static inline uint32_t
@@ -180,15 +180,79 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 	return 0;
 }
 
-/* The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none. */
+/*
+ * Try to prove cell (k, j) covered after all: a cell the walk found
+ * blocked along its meridian but that cover_add's one bound per cell
+ * left open.  The same bound on 4 x 4 sub-cells, from the primordia
+ * near the cell, is four times tighter.
+ */
+static int
+refine(struct coll *C, int32_t k, int32_t j, double r)
+{
+	const struct cover *cv = &C->cover;
+	double phi0 = j * 2 * M_PI / cv->cols, dphi = 2 * M_PI / cv->cols;
+	double worst = 0, q = cv->d[k] + r + C->rmax, cs[COVER_SUB][2];
+	double mx = cv->rho_c[k] * cv->cos_c[j], my = cv->rho_c[k] *
+	    cv->sin_c[j], mz = cv->z_c[k];
+	int32_t near[64], nn = 0, lo[3], hi[3];
+
+	cell_of(C, mx - q, my - q, mz - q, lo);
+	cell_of(C, mx + q, my + q, mz + q, hi);
+	for (int32_t a = lo[0]; a <= hi[0]; a++)
+		for (int32_t b = lo[1]; b <= hi[1]; b++)
+			for (int32_t c = lo[2]; c <= hi[2]; c++) {
+				int32_t key[3] = { a, b, c };
+
+				for (int32_t m = slot_find(C, key)->head; m >= 0;
+				    m = C->next[m]) {
+					const struct prim *o = &C->pr[m];
+					double dx = mx - o->x, dy = my - o->y,
+					    dz = mz - o->z;
+
+					if (dx * dx + dy * dy + dz * dz >= q * q)
+						continue;
+					if (nn == 64)
+						return 0; /* not worth it */
+					near[nn++] = m;
+				}
+			}
+	for (int sb = 0; sb < COVER_SUB; sb++) {
+		double phi = phi0 + dphi * (sb + 0.5) / COVER_SUB;
+
+		cs[sb][0] = cos(phi);
+		cs[sb][1] = sin(phi);
+	}
+	for (int sa = 0; sa < COVER_SUB; sa++) {
+		const double *p = cv->sub[k * COVER_SUB + sa];
+
+		for (int sb = 0; sb < COVER_SUB; sb++) {
+			double x = p[0] * cs[sb][0], y = p[0] * cs[sb][1];
+			double best = HUGE_VAL;
+
+			for (int32_t i = 0; i < nn; i++) {
+				const struct prim *o = &C->pr[near[i]];
+				double dx = x - o->x, dy = y - o->y,
+				    dz = p[1] - o->z;
+
+				best = fmin(best, sqrt(dx * dx + dy * dy +
+				    dz * dz) - o->r);
+			}
+			worst = fmax(worst, best + p[2]);
+			if (worst >= r)
+				return 0;
+		}
+	}
+	cover_lower(&C->cover, k, j, worst);
+	return 1;
+}
+
+/* The same walk without the cover map: the check that it skips only what is covered. */
 static double
-place_exact(struct coll *C, double t0, double c, double s, double r)
+place_plain(const struct coll *C, double t0, double c, double s, double r)
 {
 	double t = t0, to;
 
 	while (t <= C->cv.tmax) {
-		if (cover_skip(&C->cover, &C->cv, &t, c, s, r))
-			continue;
 		if (free_at(C, t, c, s, r, &to))
 			return t;
 		t = to;
@@ -196,9 +260,41 @@ place_exact(struct coll *C, double t0, double c, double s, double r)
 	return HUGE_VAL;
 }
 
-/* Is the point at t on meridian (c, s) clear of every earlier primordium? */
+/* The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none. */
+static double
+place_exact(struct coll *C, double t0, double phi, double c, double s,
+    double r)
+{
+	int32_t j, k = -1;
+	double t = t0, to;
+
+	if (C->nocover)
+		return place_plain(C, t0, c, s, r);
+	j = cover_col(&C->cover, phi);
+	while (t <= C->cv.tmax) {
+		if (cover_skip(&C->cover, &t, j, r, &k))
+			continue;
+		if (free_at(C, t, c, s, r, &to))
+			return t;
+		/* Blocked across a cell that holds up the column's prefix. */
+		if (k == C->cover.head[j] && to >= C->cover.t_row[k + 1]) {
+			if (!refine(C, k, j, r))
+				cover_passed(&C->cover, j, k);
+		}
+		t = to;
+		k = -1;
+	}
+	return HUGE_VAL;
+}
+
+/*
+ * Does any earlier primordium overlap the point at t on meridian
+ * (c, s)?  All of them are tried, the last one found first: along a
+ * scan one primordium covers many samples in a row.
+ */
 static int
-clear_all(const struct coll *C, double t, double c, double s, double r)
+blocked_any(const struct coll *C, double t, double c, double s, double r,
+    size_t *last)
 {
 	double p[2], x, y, z;
 
@@ -206,45 +302,52 @@ clear_all(const struct coll *C, double t, double c, double s, double r)
 	x = p[0] * c;
 	y = p[0] * s;
 	z = p[1];
-	for (size_t i = C->n; i-- > 0;) {
+	for (size_t k = 0; k <= C->n; k++) {
+		size_t i = k == 0 ? *last : k - 1;
 		const struct prim *o = &C->pr[i];
 		double dx = x - o->x, dy = y - o->y, dz = z - o->z,
 		    R = r + o->r;
 
-		if (dx * dx + dy * dy + dz * dz < R * R)
-			return 0;
+		if (i >= C->n)
+			continue;
+		if (dx * dx + dy * dy + dz * dz < R * R) {
+			*last = i;
+			return 1;
+		}
 	}
-	return 1;
+	return 0;
 }
 
 /*
- * The reference for the tests: every earlier primordium at t finely
- * spaced, then bisection between the last covered and the first free
- * sample.  A gap narrower than the spacing is missed: that is the
- * point of having the exact walk.
+ * The reference for the tests and the benchmark: every earlier
+ * primordium at samples r / BRUTE_DIV apart along the curve, then
+ * bisection between the last covered and the first free sample.  A gap
+ * narrower than the spacing is missed: that is the point of having
+ * the exact walk.
  */
-#define BRUTE_STEPS	20000	/* samples per Bezier segment */
+#define BRUTE_DIV	1024
 
 static double
 place_brute(const struct coll *C, double t0, double c, double s, double r)
 {
-	double h = 1.0 / BRUTE_STEPS, lo = t0;
+	double h = r / BRUTE_DIV / C->cv.speed, lo = t0;
+	size_t last = 0;
 
-	if (clear_all(C, t0, c, s, r))
+	if (!blocked_any(C, t0, c, s, r, &last))
 		return t0;
-	for (double k = floor(t0 / h) + 1;; k++) {
-		double t = fmin(k * h, C->cv.tmax);
+	for (double k = 1;; k++) {
+		double t = fmin(t0 + k * h, C->cv.tmax);
 
-		if (clear_all(C, t, c, s, r)) {
+		if (!blocked_any(C, t, c, s, r, &last)) {
 			for (int i = 0; i < 200; i++) {
 				double mid = lo + (t - lo) / 2;
 
 				if (mid <= lo || mid >= t)
 					break;
-				if (clear_all(C, mid, c, s, r))
-					t = mid;
-				else
+				if (blocked_any(C, mid, c, s, r, &last))
 					lo = mid;
+				else
+					t = mid;
 			}
 			return t;
 		}
@@ -312,7 +415,8 @@ coll_add(struct coll *C, double t, double c, double s, double r)
 		C->rmax = r;
 	C->n++;
 	grid_insert(C, (int32_t)(C->n - 1));
-	cover_add(&C->cover, &C->cv, t, c, s, r);
+	if (!C->nocover)
+		cover_add(&C->cover, t, o->x, o->y, o->z, r);
 }
 
 /* The organs: frames on the receptacle, the tangent away from the tip. */
@@ -350,10 +454,11 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 }
 
 int
-collision_place(const struct scene *sc, struct result *res, int brute)
+collision_place(const struct scene *sc, struct result *res, int how)
 {
+	int brute = how == PLACE_BRUTE;
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
-	struct coll C = { .sc = sc, .brute = brute };
+	struct coll C = { .sc = sc, .nocover = how != PLACE_EXACT };
 	double (*pts)[2], alpha = sc->divergence, r, eps;
 	long long N = scene_given(sc, "count") ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
@@ -374,8 +479,9 @@ collision_place(const struct scene *sc, struct result *res, int brute)
 	free(pts);
 	if (radius_at(&C, &env, 0, N, &r, &eps) != 0)
 		goto out;
-	C.g = 2 * r;
-	cover_init(&C.cover, &C.cv, r, N);
+	C.g = 4 * r;
+	if (!C.nocover)
+		cover_init(&C.cover, &C.cv, r, N);
 	grid_grow(&C);
 	coll_add(&C, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {
@@ -387,7 +493,7 @@ collision_place(const struct scene *sc, struct result *res, int brute)
 		if (eps >= 0)
 			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
 		t = brute ? place_brute(&C, t0, c, s, r) :
-		    place_exact(&C, t0, c, s, r);
+		    place_exact(&C, t0, a, c, s, r);
 		if (t > C.cv.tmax)
 			break;
 		coll_add(&C, t, c, s, r);
@@ -417,5 +523,5 @@ out:
 int
 collision_run(const struct scene *sc, struct result *res)
 {
-	return collision_place(sc, res, 0);
+	return collision_place(sc, res, PLACE_EXACT);
 }

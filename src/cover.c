@@ -1,7 +1,307 @@
-/* cover.c - stub */
-#include "cover.h"
+/*
+ * cover.c - the cover map: which parts of the receptacle are already
+ * covered, so the walk need not look there.
+ *
+ * Without epsilon every primordium starts its walk at the base, and the
+ * walk would pass all the rings below the front: O(sqrt N) steps each.
+ * But a point p with clearance F(p) = min_i (|p - Q_i| - r_i) below r
+ * is covered for a primordium of radius r, and F is 1-Lipschitz, so a
+ * cell whose points all lie within d of its middle point m has
+ * F <= F(m) + d throughout.  cover_add lowers that bound in the cells
+ * around each new primordium; a cell bounded below r is skipped whole.
+ * A packing of circles of radius r leaves no point further than about
+ * 1.15 r from a centre, so cells of a = r/2 are covered as soon as
+ * their neighbours are placed; only the front and true holes are not.
+ *
+ * Each column also remembers how many rows from the base are covered,
+ * and the largest bound among them, so a walk jumps over all of them
+ * at once; that prefix stays valid for every radius above that bound
+ * and is rebuilt when radii shrink below it.
+ */
+#include <math.h>
+#include <stdlib.h>
 
-void cover_init(struct cover *cv, const struct curve *c, double r0, long long n) { (void)c; (void)r0; (void)n; cv->on = 0; }
-void cover_free(struct cover *cv) { (void)cv; }
-void cover_add(struct cover *cv, const struct curve *c, double t, double x, double y, double r) { (void)cv; (void)c; (void)t; (void)x; (void)y; (void)r; }
-int cover_skip(struct cover *cv, const struct curve *c, double *t, double x, double y, double r) { (void)cv; (void)c; (void)t; (void)x; (void)y; (void)r; return 0; }
+#include "cover.h"
+#include "mem.h"
+
+#define CELL_FRAC	0.5	/* row height, as a fraction of r0 */
+#define CELLS_MIN	(1 << 16)
+#define CELLS_PER_ORGAN	32	/* at most, of the count bound */
+#define CELLS_MAX	(1 << 26)
+#define U_NONE		UINT16_MAX
+#define U_STEPS		2048	/* steps of the bound per row height */
+#define GROW		1.25	/* the largest next radius worth a bound, per r */
+
+static inline uint16_t
+cell_u(const struct cover *cv, int32_t k, int32_t j)
+{
+	return cv->u[(size_t)j * (size_t)cv->rows + (size_t)k];
+}
+
+static inline int
+covered(const struct cover *cv, uint16_t u, double r)
+{
+	return u != U_NONE && u * cv->q < r;
+}
+
+/* Start column j's prefix again: radii fell below what it proved. */
+static void
+column_reset(struct cover *cv, int32_t j)
+{
+	cv->head[j] = 0;
+	cv->f[j] = 0;
+	cv->first[j] = cv->last[j] = -1;
+}
+
+void
+cover_init(struct cover *cv, const struct curve *c, double r0,
+    long long count)
+{
+	double L = c->length, W = 2 * M_PI * c->rho_max, a = CELL_FRAC * r0;
+	double cells, most = (double)count * CELLS_PER_ORGAN;
+	size_t n;
+
+	if (most < CELLS_MIN)
+		most = CELLS_MIN;
+	if (most > CELLS_MAX)
+		most = CELLS_MAX;
+	/* Fewer, larger cells if there would be too many: coarser skips. */
+	cells = ceil(L / a) * fmax(1, ceil(W / a));
+	if (cells > most)
+		a = sqrt(L * fmax(W, a) / most) * 1.01;
+	cv->a = a;
+	cv->rows = (int32_t)fmax(1, ceil(L / a));
+	cv->cols = (int32_t)fmax(1, ceil(W / a));
+	cv->q = a / U_STEPS;
+	cv->inv_q = U_STEPS / a;
+	cv->t_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->t_row));
+	cv->rho_c = xcalloc((size_t)cv->rows, sizeof(*cv->rho_c));
+	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
+	cv->d = xcalloc((size_t)cv->rows, sizeof(*cv->d));
+	for (int32_t k = 0; k <= cv->rows; k++)
+		cv->t_row[k] = k == cv->rows ? c->tmax : curve_t(c, k * a);
+	cv->sub = xcalloc((size_t)cv->rows * COVER_SUB, sizeof(*cv->sub));
+	for (int32_t k = 0; k < cv->rows; k++) {
+		double s0 = k * a, s1 = fmin((k + 1) * a, L), p[2];
+
+		for (int i = 0; i < COVER_SUB; i++) {
+			double *sp = cv->sub[k * COVER_SUB + i];
+
+			curve_eval(c, curve_t(c, s0 + (s1 - s0) * (i + 0.5) /
+			    COVER_SUB), sp, NULL);
+			sp[2] = (s1 - s0) / (2 * COVER_SUB) + (sp[0] + (s1 - s0) /
+			    (2 * COVER_SUB)) * M_PI / (cv->cols * COVER_SUB);
+		}
+		curve_eval(c, curve_t(c, (s0 + s1) / 2), p, NULL);
+		cv->rho_c[k] = p[0];
+		cv->z_c[k] = p[1];
+		/*
+		 * Along the curve a point is at most (s1 - s0)/2 away (a
+		 * chord is no longer than its arc); about the axis at most
+		 * rho pi / cols, rho at most half a row more than here.
+		 */
+		cv->d[k] = (s1 - s0) / 2 + (p[0] + (s1 - s0) / 2) * M_PI /
+		    cv->cols;
+	}
+	cv->cos_c = xcalloc((size_t)cv->cols, sizeof(*cv->cos_c));
+	cv->sin_c = xcalloc((size_t)cv->cols, sizeof(*cv->sin_c));
+	for (int32_t j = 0; j < cv->cols; j++) {
+		double phi = (j + 0.5) * 2 * M_PI / cv->cols;
+
+		cv->cos_c[j] = cos(phi);
+		cv->sin_c[j] = sin(phi);
+	}
+	n = (size_t)cv->rows * (size_t)cv->cols;
+	cv->u = xcalloc(n, sizeof(*cv->u));
+	for (size_t i = 0; i < n; i++)
+		cv->u[i] = U_NONE;
+	cv->head = xcalloc((size_t)cv->cols, sizeof(*cv->head));
+	cv->f = xcalloc((size_t)cv->cols, sizeof(*cv->f));
+	cv->first = xcalloc((size_t)cv->cols, sizeof(*cv->first));
+	cv->last = xcalloc((size_t)cv->cols, sizeof(*cv->last));
+	for (int32_t j = 0; j < cv->cols; j++)
+		column_reset(cv, j);
+}
+
+void
+cover_free(struct cover *cv)
+{
+	free(cv->t_row);
+	free(cv->rho_c);
+	free(cv->z_c);
+	free(cv->d);
+	free(cv->sub);
+	free(cv->cos_c);
+	free(cv->sin_c);
+	free(cv->u);
+	free(cv->head);
+	free(cv->f);
+	free(cv->first);
+	free(cv->last);
+	free(cv->ex);
+}
+
+int32_t
+cover_col(const struct cover *cv, double phi)
+{
+	int32_t j = (int32_t)(phi / (2 * M_PI) * cv->cols);
+
+	return j < 0 ? 0 : j >= cv->cols ? cv->cols - 1 : j;
+}
+
+int32_t
+cover_row(const struct cover *cv, double t)
+{
+	int32_t lo = 0, hi = cv->rows - 1;
+
+	while (lo < hi) {
+		int32_t mid = (lo + hi + 1) / 2;
+
+		if (cv->t_row[mid] <= t)
+			lo = mid;
+		else
+			hi = mid - 1;
+	}
+	return lo;
+}
+
+void
+cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
+{
+	uint16_t *u = &cv->u[(size_t)j * (size_t)cv->rows + (size_t)k];
+	/* Rounded up, and a step more: a bound must never shrink. */
+	double steps = U * cv->inv_q + 2;
+
+	if (steps < *u)
+		*u = steps > 0 ? (uint16_t)steps : 0;
+}
+
+void
+cover_add(struct cover *cv, double t, double x, double y, double z, double r)
+{
+	/* Rows as far as the bound can bring a cell under GROW r. */
+	int32_t kq = cover_row(cv, t), span = (int32_t)ceil(GROW * r / cv->a);
+	int32_t k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
+	int32_t k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
+	double rho = hypot(x, y), phi = atan2(y, x);
+
+	if (phi < 0)
+		phi += 2 * M_PI;
+	for (int32_t k = k0; k <= k1; k++) {
+		double rk = cv->rho_c[k], dz = cv->z_c[k] - z;
+		double reach = GROW * r - cv->d[k] + r;
+		double lim = reach * reach - dz * dz, m = 4 * rk * rho;
+		int32_t jc = cover_col(cv, phi), w, lo, hi;
+
+		if (lim <= 0)
+			continue;
+		/* |P - Q|^2 >= 4 rk rho sin^2(dphi / 2) + dz^2. */
+		w = m > lim ? (int32_t)ceil(asin(sqrt(lim / m)) / M_PI *
+		    cv->cols) + 1 : cv->cols;
+		lo = -w;
+		hi = w;
+		if (2 * w + 1 >= cv->cols) {	/* the whole ring, once */
+			lo = -jc;
+			hi = cv->cols - 1 - jc;
+		}
+		for (int32_t dj = lo; dj <= hi; dj++) {
+			int32_t j = jc + dj;
+			double dx, dy, D2;
+
+			j += j < 0 ? cv->cols : j >= cv->cols ? -cv->cols : 0;
+			dx = rk * cv->cos_c[j] - x;
+			dy = rk * cv->sin_c[j] - y;
+			D2 = dx * dx + dy * dy + dz * dz;
+			if (D2 < reach * reach)
+				cover_lower(cv, k, j, sqrt(D2) - r + cv->d[k]);
+		}
+	}
+}
+
+/* The row where t moves next in column j, below its head: an exception or the head. */
+static int32_t
+prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
+{
+	int32_t *link = &cv->first[j], prev = -1;
+
+	while (*link >= 0) {
+		struct except *e = &cv->ex[*link];
+		uint16_t u = cell_u(cv, e->row, j);
+
+		if (covered(cv, u, r)) {
+			/* Covered since: into the prefix with the rest. */
+			if (u > cv->f[j])
+				cv->f[j] = u;
+			if (cv->last[j] == *link)
+				cv->last[j] = prev;
+			*link = e->next;
+			continue;
+		}
+		if (e->row >= k)
+			return e->row;
+		prev = *link;
+		link = &e->next;
+	}
+	return cv->head[j];
+}
+
+int
+cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
+{
+	/* Walks mostly step a row at a time: try the next row first. */
+	int32_t k = *row, h;
+	uint16_t u;
+
+	if (cv->f[j] * cv->q >= r)
+		column_reset(cv, j);
+	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t) ||
+	    (k + 1 < cv->rows && !(*t < cv->t_row[k + 1])))
+		k = cover_row(cv, *t);
+	h = cv->head[j];
+	if (k < h) {
+		int32_t e = prefix_next(cv, j, k, r);
+
+		if (e == k) {
+			*row = k;
+			return 0;
+		}
+		*t = e == cv->rows ? HUGE_VAL : cv->t_row[e];
+		*row = e;
+		return 1;
+	}
+	u = cell_u(cv, k, j);
+	if (!covered(cv, u, r)) {
+		*row = k;
+		return 0;
+	}
+	if (k == h) {
+		cv->head[j] = h + 1;
+		if (u > cv->f[j])
+			cv->f[j] = u;
+	}
+	*t = k + 1 == cv->rows ? HUGE_VAL : cv->t_row[k + 1];
+	*row = k + 1;
+	return 1;
+}
+
+void
+cover_passed(struct cover *cv, int32_t j, int32_t k)
+{
+	struct except *e;
+
+	if (k != cv->head[j])
+		return;
+	if (cv->nex == cv->exmax) {
+		cv->exmax = cv->exmax ? 2 * cv->exmax : 1024;
+		cv->ex = xreallocarray(cv->ex, cv->exmax, sizeof(*cv->ex));
+	}
+	e = &cv->ex[cv->nex];
+	e->row = k;
+	e->next = -1;
+	if (cv->last[j] >= 0)
+		cv->ex[cv->last[j]].next = (int32_t)cv->nex;
+	else
+		cv->first[j] = (int32_t)cv->nex;
+	cv->last[j] = (int32_t)cv->nex++;
+	cv->head[j] = k + 1;
+}

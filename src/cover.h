@@ -2,18 +2,78 @@
 #ifndef COVER_H
 #define COVER_H
 
+#include <stdint.h>
+
 #include "curve.h"
 
+#define COVER_SUB	4	/* sub-cells a side, for a closer look */
+
+/*
+ * The receptacle cut into cells: rows of arc length a up the curve,
+ * columns of equal angle about the axis.  Each cell keeps an upper
+ * bound U of the clearance min_i (|p - Q_i| - r_i) over all its points
+ * p, so a new primordium of radius r > U overlaps something wherever
+ * it is put in the cell.  Each column keeps how many of its rows, from
+ * the base up, are so covered (for every radius above f).
+ */
 struct cover {
-	int	 on;
+	double		 a;		/* row height, arc length */
+	int32_t		 rows, cols;
+	double		*t_row;		/* rows + 1: t at each row's start */
+	double		*rho_c, *z_c;	/* rows: the row's middle point */
+	double		*d;		/* rows: cell points lie this near */
+	double		*cos_c, *sin_c;	/* cols: the column's middle angle */
+	uint16_t	*u;		/* cols * rows, a column a run: U in steps of q */
+	double		 q, inv_q;
+	double		(*sub)[3];	/* rows * COVER_SUB: sub-row middles
+					   (rho, z) and their cells' d */
+	int32_t		*head;		/* cols: rows covered from the base */
+	uint16_t	*f;		/* cols: the largest U among them */
+	int32_t		*first, *last;	/* cols: their exceptions, or -1 */
+	struct except	*ex;		/* the pool of exceptions */
+	size_t		 nex, exmax;
+};
+
+/*
+ * A cell below a column's head that is not covered everywhere (a gap
+ * between primordia too small for the primordium that came by, but not
+ * provably too small for every other): walks look at it exactly.
+ */
+struct except {
+	int32_t		 row;
+	int32_t		 next;		/* in the column's list, or -1 */
 };
 
 void	cover_init(struct cover *, const struct curve *, double r0,
 	    long long count);
 void	cover_free(struct cover *);
-void	cover_add(struct cover *, const struct curve *, double t, double c,
-	    double s, double r);
-int	cover_skip(struct cover *, const struct curve *, double *t, double c,
-	    double s, double r);
+
+/* The column of angle phi (radians, [0, 2 pi)). */
+int32_t	cover_col(const struct cover *, double phi);
+
+/* The row holding t. */
+int32_t	cover_row(const struct cover *, double t);
+
+/* Record primordium (x, y, z) of radius r at curve parameter t. */
+void	cover_add(struct cover *, double t, double x, double y, double z,
+	    double r);
+
+/* Lower cell (k, j)'s bound to U if that is lower. */
+void	cover_lower(struct cover *, int32_t k, int32_t j, double U);
+
+/*
+ * If t lies in covered cells of column j for radius r, move it past
+ * them and return 1; else return 0.  *row is the row of t after, and
+ * a guess of it before (-1: none).
+ */
+int	cover_skip(struct cover *, double *t, int32_t j, double r,
+	    int32_t *row);
+
+/*
+ * A walk found column j's head cell k blocked all along its meridian;
+ * covered tells whether the cell is now proven covered.  If not, it
+ * becomes an exception and the head moves on.
+ */
+void	cover_passed(struct cover *, int32_t j, int32_t k);
 
 #endif

@@ -35,6 +35,8 @@ static const double gl_w[4] = {
 	0.2223810344533745, 0.1012285362903763
 };
 
+static double	convex_radius(const double b[4][2]);
+
 static void
 to_power(struct piece *p)
 {
@@ -111,7 +113,7 @@ piece_length(const struct piece *p, double u)
 			double x[2], d[2];
 
 			piece_eval(p, h + sgn * h * gl_x[i], x, d);
-			sum += gl_w[i] * hypot(d[0], d[1]);
+			sum += gl_w[i] * sqrt(d[0] * d[0] + d[1] * d[1]);
 		}
 	return sum * h;
 }
@@ -166,13 +168,21 @@ curve_init(struct curve *cv, const double (*pts)[2], int npts)
 			bez_sub((const double (*)[2])(pts + 3 * k), u0, u1,
 			    p->b);
 			to_power(p);
+			p->kappa = convex_radius((const double (*)[2])p->b);
 			p->t0 = k + u0;
 			p->t1 = k + u1;
 			p->s0 = s;
 			s += piece_length(p, 1);
-			for (int i = 0; i < 4; i++)
+			for (int i = 0; i < 4; i++) {
 				if (p->b[i][0] > cv->rho_max)
 					cv->rho_max = p->b[i][0];
+				/* The hodograph's control points bound p'. */
+				if (i < 3)
+					cv->speed = fmax(cv->speed, 3 * hypot(
+					    p->b[i + 1][0] - p->b[i][0],
+					    p->b[i + 1][1] - p->b[i][1]) /
+					    (p->t1 - p->t0));
+			}
 		}
 	free(per);
 	cv->length = s;
@@ -399,7 +409,7 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 /* The first u in [u0, u1] at which piece p (there b) is free; -1: none. */
 static double
 exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
-    const double q[2], double S2)
+    const double q[2], double S2, double kappa)
 {
 	double near2, far2, fp, k, half[2][4][2], mid;
 
@@ -410,10 +420,31 @@ exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
 		return -1;
 	if (gap(p, u0, q, S2, &fp) >= 0)
 		return u0;
-	k = convex_radius(b);
+	/* A part of a convex piece is convex: no need to look again. */
+	k = far2 < kappa * kappa ? kappa : convex_radius(b);
 	if (far2 < k * k) {
+		double x[2], d[2], a, b, c, disc, guess;
+
 		if (gap(p, u1, q, S2, &fp) < 0)
 			return -1;
+		/*
+		 * Start Newton where the tangent at u0 leaves the disk, if
+		 * that is already outside (it mostly is: the curve bends
+		 * away less than the disk does), else at u1.
+		 */
+		piece_eval(p, u0, x, d);
+		x[0] -= q[0];
+		x[1] -= q[1];
+		a = d[0] * d[0] + d[1] * d[1];
+		b = x[0] * d[0] + x[1] * d[1];
+		c = x[0] * x[0] + x[1] * x[1] - S2;
+		disc = b * b - a * c;
+		if (a > 0 && disc >= 0) {
+			guess = u0 + (-b + sqrt(disc)) / a;
+			if (guess > u0 && guess < u1 &&
+			    gap(p, guess, q, S2, &fp) >= 0)
+				u1 = guess;
+		}
 		return crossing(p, u0, u1, q, S2);
 	}
 	mid = (u0 + u1) / 2;
@@ -421,9 +452,9 @@ exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
 		return gap(p, u1, q, S2, &fp) >= 0 ? u1 : -1;
 	bez_split(b, 0.5, half[0], half[1]);
 	if ((k = exit_sub(p, (const double (*)[2])half[0], u0, mid, q,
-	    S2)) >= 0)
+	    S2, 0)) >= 0)
 		return k;
-	return exit_sub(p, (const double (*)[2])half[1], mid, u1, q, S2);
+	return exit_sub(p, (const double (*)[2])half[1], mid, u1, q, S2, 0);
 }
 
 double
@@ -440,7 +471,8 @@ curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 			bez_sub((const double (*)[2])p->b, u, 1, b);
 		else
 			memcpy(b, p->b, sizeof(b));
-		if ((e = exit_sub(p, (const double (*)[2])b, u, 1, q, S2)) >= 0)
+		if ((e = exit_sub(p, (const double (*)[2])b, u, 1, q, S2,
+		    p->kappa)) >= 0)
 			return p->t0 + e * (p->t1 - p->t0);
 	}
 	return HUGE_VAL;

@@ -14,6 +14,8 @@ struct piece {
 	double	 c[4][2];	/* the same polynomial in powers of u */
 	double	 t0, t1;	/* the global parameter at its ends */
 	double	 s0;		/* arc length from the base to its start */
+	double	 kappa;		/* g(u) = |p(u) - q|^2 is convex on the
+				   piece for |p - q| < kappa */
 };
 
 /*
@@ -26,6 +28,7 @@ struct curve {
 	double		 tmax;		/* the number of segments */
 	double		 length;	/* arc length, base to tip */
 	double		 rho_max;	/* widest radius */
+	double		 speed;		/* at least |dp/dt| everywhere */
 };
 
 /* From 3k+1 control points; -1 if the curve has no length. */

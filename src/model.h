@@ -12,8 +12,13 @@ model_fn planar_run;
 model_fn cylindrical_run;
 model_fn collision_run;
 
-/* The collision model; brute: the slow reference placement, for tests. */
-int	collision_place(const struct scene *, struct result *, int brute);
+/* The collision model, placing as the tests and benchmarks choose. */
+enum place {
+	PLACE_EXACT,	/* the exact walk with the cover map: the model */
+	PLACE_PLAIN,	/* the exact walk alone */
+	PLACE_BRUTE	/* every earlier primordium at finely spaced t */
+};
+int	collision_place(const struct scene *, struct result *, int how);
 
 /*
  * Called now and then by a long-running model with the count placed so
