@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "diag.h"
@@ -41,6 +42,42 @@ static model_fn *const models[MODEL__MAX] = {
 	[MODEL_CYLINDRICAL] = cylindrical_run,
 	[MODEL_COLLISION] = collision_run,
 };
+
+/*
+ * A long placement (the collision model) reports on a terminal, once
+ * it has taken half a second: how many are placed and how fast.  The
+ * line is rubbed out at the end, leaving the terminal as it was.
+ */
+static struct timespec progress_t0;
+static int progress_width;
+
+static double
+progress_seconds(void)
+{
+	struct timespec now;
+
+	clock_gettime(CLOCK_MONOTONIC, &now);
+	return (double)(now.tv_sec - progress_t0.tv_sec) +
+	    (double)(now.tv_nsec - progress_t0.tv_nsec) / 1e9;
+}
+
+static void
+progress(long long done, int last)
+{
+	double sec = progress_seconds();
+
+	if (last) {
+		if (progress_width > 0)
+			fprintf(stderr, "\r%*s\r", progress_width, "");
+		progress_width = 0;
+		return;
+	}
+	if (sec < 0.5)
+		return;
+	progress_width = fprintf(stderr, "\r%s: placed %lld primordia, "
+	    "%.0f a second ", diag_progname, done, done / sec) - 1;
+	fflush(stderr);
+}
 
 struct args {
 	const struct writer *writer;
@@ -258,6 +295,10 @@ main(int argc, char *argv[])
 	}
 	if (st > 0)
 		return st;
+	if (isatty(STDERR_FILENO)) {
+		clock_gettime(CLOCK_MONOTONIC, &progress_t0);
+		model_progress = progress;
+	}
 	if (prepare(&a, &sc, &t, &res) == 0)
 		write_result(&a, t, &sc, &res);
 	tmpl_free(t);

@@ -253,14 +253,26 @@ set_points(struct load *L, const config_setting_t *s, const struct row *r,
 			return -1;
 		}
 		for (int k = 0; k < 2; k++) {
-			struct row any = *r;
+			config_setting_t *x = config_setting_get_elem(e,
+			    (unsigned)k);
+			double v;
 
-			/* The height may be negative; the radius may not. */
-			if (k == 1)
-				any.lo = -HUGE_VAL;
-			if (set_number(L, config_setting_get_elem(e,
-			    (unsigned)k), &any, &dst->p[i][k]) < 0)
+			if (!config_setting_is_number(x)) {
+				err_at(L, x, "%s: point %d must be two numbers "
+				    "(radius, height)", r->path, i + 1);
 				return -1;
+			}
+			v = config_setting_type(x) == CONFIG_TYPE_FLOAT ?
+			    config_setting_get_float(x) :
+			    (double)config_setting_get_int64(x);
+			if (!isfinite(v) || (k == 0 && v < 0)) {
+				err_at(L, x, "%s: point %d has %s %.15g; it must "
+				    "be %s", r->path, i + 1, k ? "height" :
+				    "radius", v, k ? "finite" :
+				    "finite and at least 0");
+				return -1;
+			}
+			dst->p[i][k] = v;
 		}
 	}
 	return 0;
