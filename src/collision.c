@@ -81,12 +81,20 @@ slot_find(const struct coll *C, const int32_t k[3])
 	}
 }
 
+/* Far-flung cells share a key: slower, never wrong, and no overflow. */
+static inline int32_t
+cell1(double v)
+{
+	v = floor(v);
+	return v < -1e9 ? -1000000000 : v > 1e9 ? 1000000000 : (int32_t)v;
+}
+
 static void
 cell_of(const struct coll *C, double x, double y, double z, int32_t k[3])
 {
-	k[0] = (int32_t)floor(x / C->g);
-	k[1] = (int32_t)floor(y / C->g);
-	k[2] = (int32_t)floor(z / C->g);
+	k[0] = cell1(x / C->g);
+	k[1] = cell1(y / C->g);
+	k[2] = cell1(z / C->g);
 }
 
 static void grid_insert(struct coll *, int32_t);
@@ -479,7 +487,7 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	free(pts);
 	if (radius_at(&C, &env, 0, N, &r, &eps) != 0)
 		goto out;
-	C.g = 4 * r;
+	C.g = 8 * r;
 	if (!C.nocover)
 		cover_init(&C.cover, &C.cv, r, N);
 	grid_grow(&C);

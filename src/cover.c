@@ -20,6 +20,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cover.h"
 #include "mem.h"
@@ -28,18 +29,31 @@
 #define CELLS_MIN	(1 << 16)
 #define CELLS_PER_ORGAN	32	/* at most, of the count bound */
 #define CELLS_MAX	(1 << 26)
-#define U_NONE		UINT16_MAX
-#define U_STEPS		2048	/* steps of the bound per row height */
-#define GROW		1.25	/* the largest next radius worth a bound, per r */
+#define U_NONE		UINT8_MAX
+#define U_STEPS		64	/* steps of the bound per row height: up to 4 rows */
+#define GROW		1.05	/* the largest next radius worth a bound, per r */
 
-static inline uint16_t
+/*
+ * Cells are stored in tiles of 8 rows by 8 columns, a cache line each:
+ * cover_add writes a patch of cells around a primordium and a walk
+ * reads up a column, and either way few lines are touched.
+ */
+static inline uint8_t *
+cell(const struct cover *cv, int32_t k, int32_t j)
+{
+	size_t tile = (size_t)(j >> 3) * (size_t)cv->tiles_k + (size_t)(k >> 3);
+
+	return &cv->u[tile * 64 + (size_t)((j & 7) << 3 | (k & 7))];
+}
+
+static inline uint8_t
 cell_u(const struct cover *cv, int32_t k, int32_t j)
 {
-	return cv->u[(size_t)j * (size_t)cv->rows + (size_t)k];
+	return *cell(cv, k, j);
 }
 
 static inline int
-covered(const struct cover *cv, uint16_t u, double r)
+covered(const struct cover *cv, uint8_t u, double r)
 {
 	return u != U_NONE && u * cv->q < r;
 }
@@ -111,10 +125,10 @@ cover_init(struct cover *cv, const struct curve *c, double r0,
 		cv->cos_c[j] = cos(phi);
 		cv->sin_c[j] = sin(phi);
 	}
-	n = (size_t)cv->rows * (size_t)cv->cols;
-	cv->u = xcalloc(n, sizeof(*cv->u));
-	for (size_t i = 0; i < n; i++)
-		cv->u[i] = U_NONE;
+	cv->tiles_k = (cv->rows + 7) / 8;
+	n = (size_t)cv->tiles_k * (size_t)((cv->cols + 7) / 8) * 64;
+	cv->u = xaligned(64, n);
+	memset(cv->u, U_NONE, n);
 	cv->head = xcalloc((size_t)cv->cols, sizeof(*cv->head));
 	cv->f = xcalloc((size_t)cv->cols, sizeof(*cv->f));
 	cv->first = xcalloc((size_t)cv->cols, sizeof(*cv->first));
@@ -168,19 +182,22 @@ cover_row(const struct cover *cv, double t)
 void
 cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 {
-	uint16_t *u = &cv->u[(size_t)j * (size_t)cv->rows + (size_t)k];
+	uint8_t *u = cell(cv, k, j);
 	/* Rounded up, and a step more: a bound must never shrink. */
 	double steps = U * cv->inv_q + 2;
 
 	if (steps < *u)
-		*u = steps > 0 ? (uint16_t)steps : 0;
+		*u = steps > 0 ? (uint8_t)steps : 0;
 }
 
 void
 cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 {
 	/* Rows as far as the bound can bring a cell under GROW r. */
-	int32_t kq = cover_row(cv, t), span = (int32_t)ceil(GROW * r / cv->a);
+	int32_t kq = cover_row(cv, t), span;
+	double rows = ceil(GROW * r / cv->a);
+
+	span = rows < cv->rows ? (int32_t)rows : cv->rows;
 	int32_t k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
 	int32_t k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
 	double rho = hypot(x, y), phi = atan2(y, x);
@@ -226,7 +243,7 @@ prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
 
 	while (*link >= 0) {
 		struct except *e = &cv->ex[*link];
-		uint16_t u = cell_u(cv, e->row, j);
+		uint8_t u = cell_u(cv, e->row, j);
 
 		if (covered(cv, u, r)) {
 			/* Covered since: into the prefix with the rest. */
@@ -250,7 +267,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 {
 	/* Walks mostly step a row at a time: try the next row first. */
 	int32_t k = *row, h;
-	uint16_t u;
+	uint8_t u;
 
 	if (cv->f[j] * cv->q >= r)
 		column_reset(cv, j);

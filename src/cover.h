@@ -23,12 +23,13 @@ struct cover {
 	double		*rho_c, *z_c;	/* rows: the row's middle point */
 	double		*d;		/* rows: cell points lie this near */
 	double		*cos_c, *sin_c;	/* cols: the column's middle angle */
-	uint16_t	*u;		/* cols * rows, a column a run: U in steps of q */
+	uint8_t		*u;		/* U in steps of q, in 8 x 8 tiles */
+	int32_t		 tiles_k;	/* tiles up a column */
 	double		 q, inv_q;
 	double		(*sub)[3];	/* rows * COVER_SUB: sub-row middles
 					   (rho, z) and their cells' d */
 	int32_t		*head;		/* cols: rows covered from the base */
-	uint16_t	*f;		/* cols: the largest U among them */
+	uint8_t		*f;		/* cols: the largest U among them */
 	int32_t		*first, *last;	/* cols: their exceptions, or -1 */
 	struct except	*ex;		/* the pool of exceptions */
 	size_t		 nex, exmax;

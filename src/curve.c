@@ -375,26 +375,44 @@ gap(const struct piece *p, double u, const double q[2], double S2,
 }
 
 /*
- * The crossing of a convex g - S2 from below (at lo) to above (at hi):
- * Newton's method from hi stays on the free side of a convex function,
- * with bisection for when rounding says otherwise.
+ * The crossing of a convex g - S2 from below (at lo) to above (at hi).
+ * Newton's method from the free side of a convex function stays there
+ * and never overshoots: the root lies within one Newton step below
+ * hi, so a step under 1e-15 (of a piece) ends it.  It starts where
+ * the tangent at lo leaves the disk, if that is free (it mostly is:
+ * the curve bends away from the disk less than the disk does).
+ * Bisection takes over where rounding has the last word.
  */
+#define U_EPS	1e-15
+
 static double
 crossing(const struct piece *p, double lo, double hi, const double q[2],
     double S2)
 {
-	double fp, fh = gap(p, hi, q, S2, &fp), fph = fp;
+	double x[2], d[2], a, b, c, disc, fh, fph, f, fp;
 
-	for (int i = 0; i < 200; i++) {
-		double nu = fph > 0 ? hi - fh / fph : lo, f;
+	piece_eval(p, lo, x, d);
+	x[0] -= q[0];
+	x[1] -= q[1];
+	a = d[0] * d[0] + d[1] * d[1];
+	b = x[0] * d[0] + x[1] * d[1];
+	c = x[0] * x[0] + x[1] * x[1] - S2;
+	disc = b * b - a * c;
+	if (a > 0 && disc >= 0) {
+		double guess = lo + (-b + sqrt(disc)) / a;
 
-		if (nu == hi)		/* converged: the step is below an ulp */
+		if (guess > lo && guess < hi &&
+		    (f = gap(p, guess, q, S2, &fp)) >= 0)
+			hi = guess;
+	}
+	fh = gap(p, hi, q, S2, &fph);
+	for (int i = 0; i < 100 && hi - lo > U_EPS; i++) {
+		double step = fph > 0 ? fh / fph : HUGE_VAL, nu = hi - step;
+
+		if (step <= U_EPS)
 			break;
-		if (!(nu > lo && nu < hi)) {
+		if (!(nu > lo))
 			nu = lo + (hi - lo) / 2;
-			if (nu <= lo || nu >= hi)
-				break;
-		}
 		if ((f = gap(p, nu, q, S2, &fp)) < 0)
 			lo = nu;
 		else {
@@ -423,28 +441,8 @@ exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
 	/* A part of a convex piece is convex: no need to look again. */
 	k = far2 < kappa * kappa ? kappa : convex_radius(b);
 	if (far2 < k * k) {
-		double x[2], d[2], a, b, c, disc, guess;
-
 		if (gap(p, u1, q, S2, &fp) < 0)
 			return -1;
-		/*
-		 * Start Newton where the tangent at u0 leaves the disk, if
-		 * that is already outside (it mostly is: the curve bends
-		 * away less than the disk does), else at u1.
-		 */
-		piece_eval(p, u0, x, d);
-		x[0] -= q[0];
-		x[1] -= q[1];
-		a = d[0] * d[0] + d[1] * d[1];
-		b = x[0] * d[0] + x[1] * d[1];
-		c = x[0] * x[0] + x[1] * x[1] - S2;
-		disc = b * b - a * c;
-		if (a > 0 && disc >= 0) {
-			guess = u0 + (-b + sqrt(disc)) / a;
-			if (guess > u0 && guess < u1 &&
-			    gap(p, guess, q, S2, &fp) >= 0)
-				u1 = guess;
-		}
 		return crossing(p, u0, u1, q, S2);
 	}
 	mid = (u0 + u1) / 2;
@@ -465,8 +463,21 @@ curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 
 	for (; i < cv->npc; i++, u = 0) {
 		const struct piece *p = &cv->pc[i];
-		double e;
+		double e, near2, far2, fp;
 
+		/*
+		 * Mostly the disk is small beside the piece and the piece
+		 * is convex for it: then no need to cut out the part from u.
+		 */
+		box_dist((const double (*)[2])p->b, q, &near2, &far2);
+		if (u > 0 && far2 < p->kappa * p->kappa) {
+			if (gap(p, u, q, S2, &fp) >= 0)
+				return t;
+			if (gap(p, 1, q, S2, &fp) < 0)
+				continue;
+			return p->t0 + crossing(p, u, 1, q, S2) *
+			    (p->t1 - p->t0);
+		}
 		if (u > 0)
 			bez_sub((const double (*)[2])p->b, u, 1, b);
 		else

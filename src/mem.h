@@ -7,6 +7,7 @@
 void	*xmalloc(size_t);
 void	*xcalloc(size_t, size_t);
 void	*xreallocarray(void *, size_t, size_t);
+void	*xaligned(size_t align, size_t);
 char	*xstrdup(const char *);
 
 #endif

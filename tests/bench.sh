@@ -38,6 +38,9 @@ echo "$model $csv $bytes $N" | awk '{
 	printf "CSV writing share:    %.0f%%\n", 100 * ($2 - $1) / $2
 }'
 
+echo "== collision model: exact placement, one core"
+"$TESTBIN/bench_collision"
+
 echo "== POV-Ray include, $N organs"
 pov=$(best "$PHYLLO" --pov -o /dev/null "$OUT/planar.cfg")
 echo "$pov $N" | awk '{ printf "model + include:      %.3f s  = %.2f M organs/s\n", $1, $2 / $1 / 1e6 }'

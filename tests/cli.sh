@@ -257,3 +257,25 @@ printf 'model = "planar";\ncount = 1000000;\n' >"$OUT/million.cfg"
 try "a million organs are written in full" sh -c '"$0" --csv "$1" | wc -l' "$PHYLLO" "$OUT/million.cfg"
 assert "1000001 lines" '[ "$(cat $OUT/stdout)" -eq 1000001 ]'
 end
+
+# The collision model's default bound: a radius small enough to hold
+# more than a million stops there, says so, and succeeds.
+printf 'model = "collision";\ncollision = { receptacle = { shape = "hemisphere"; }; radius = 0.0011; };\n' >"$OUT/many.cfg"
+try "collision: the default bound stops a million primordia with a warning" px --info "$OUT/many.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "1000000 placed" 'grep -qx "primordia: 1000000" $OUT/stdout'
+assert "one warning line" '[ $(wc -l <$OUT/stderr) -eq 1 ] && grep -q "warning: stopped at 1000000 primordia, the default bound" $OUT/stderr'
+assert "no progress line off a terminal" '! grep -q placed $OUT/stderr'
+end
+
+# On a terminal (script(1) gives it one), a long placement shows how
+# far it has got, and rubs the line out at the end.
+if command -v script >/dev/null; then
+	try "collision: a progress line on a terminal" script -qec "$PHYLLO --info $OUT/many.cfg" /dev/null
+	assert "counts placed primordia and their rate" 'grep -aq "placed [0-9]* primordia, [0-9]* a second" $OUT/stdout'
+	assert "rubbed out: the last progress is followed by blanks" 'tr "\r" "\n" <$OUT/stdout | grep -aq "^ *$"'
+	assert "the result follows" 'grep -aq "primordia: 1000000" $OUT/stdout'
+	end
+else
+	skip "script(1) not found: the progress line on a terminal"
+fi

@@ -1,8 +1,9 @@
 /*
  * fuzz_scene.c - libFuzzer harness for the whole scene path: bytes ->
  * scene -> model -> organs -> every writer, into memory.  Scenes that
- * ask for more than 20,000 organs are loaded and checked but not run,
- * to keep each input fast; the limits themselves have their own tests.
+ * ask for more than 20,000 organs (or a collision scene without a
+ * count, a million) are loaded and checked but not run, to keep each
+ * input fast; the limits themselves have their own tests.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -14,6 +15,7 @@
 static model_fn *const models[MODEL__MAX] = {
 	[MODEL_PLANAR] = planar_run,
 	[MODEL_CYLINDRICAL] = cylindrical_run,
+	[MODEL_COLLISION] = collision_run,
 };
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -30,6 +32,9 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		goto out;
 	if (sc.count > 20000 || scene_given(&sc, "cylindrical.length") ||
 	    models[sc.model] == NULL)
+		goto out;
+	/* The collision model's default bound is a million. */
+	if (sc.model == MODEL_COLLISION && !scene_given(&sc, "count"))
 		goto out;
 	if (models[sc.model](&sc, &res) != 0 || organs_apply(&sc, &res) != 0)
 		goto out;

@@ -13,7 +13,11 @@ for f in ${*:-fuzz_scene fuzz_expr fuzz_template}; do
 	c=build-fuzz/corpus/$f
 	mkdir -p "$c"
 	case $f in
-	fuzz_scene) cp scenes/*.cfg tests/golden/*.cfg tests/bad/*.cfg "$c"/ ;;
+	fuzz_scene) cp scenes/*.cfg tests/golden/*.cfg tests/bad/*.cfg "$c"/
+		# Collision scenes run only with a count (see the harness).
+		for s in scenes/*.cfg; do
+			{ echo 'count = 400;'; cat "$s"; } >"$c/count-${s##*/}"
+		done ;;
 	fuzz_expr) grep -ho '"[^"]*"' scenes/*.cfg tests/bad/expr-*.cfg |
 		tr -d '"' | awk '{ f = sprintf("%s/seed%d", c, NR); printf "%s", $0 > f; close(f) }' c="$c" ;;
 	fuzz_template) cp templates/*.tmpl tests/bad-pov/*.tmpl "$c"/ ;;
