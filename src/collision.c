@@ -202,7 +202,10 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 	double worst = 0, q = cv->d[k] + r + C->rmax, cs[COVER_SUB][2];
 	double mx = cv->rho_c[k] * cv->cos_c[j], my = cv->rho_c[k] *
 	    cv->sin_c[j], mz = cv->z_c[k];
-	int32_t near[64], nn = 0, lo[3], hi[3];
+	struct near {
+		double	 x, y, z, r, d2;
+	} near[64];
+	int32_t nn = 0, lo[3], hi[3];
 
 	cell_of(C, mx - q, my - q, mz - q, lo);
 	cell_of(C, mx + q, my + q, mz + q, hi);
@@ -216,12 +219,19 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 					const struct prim *o = &C->pr[m];
 					double dx = mx - o->x, dy = my - o->y,
 					    dz = mz - o->z;
+					double d2 = dx * dx + dy * dy + dz * dz;
+					int32_t i = nn;
 
-					if (dx * dx + dy * dy + dz * dz >= q * q)
+					if (d2 >= q * q)
 						continue;
 					if (nn == 64)
 						return 0; /* not worth it */
-					near[nn++] = m;
+					/* Nearest first: they settle most points. */
+					for (; i > 0 && near[i - 1].d2 > d2; i--)
+						near[i] = near[i - 1];
+					near[i] = (struct near){ o->x, o->y, o->z,
+					    o->r, d2 };
+					nn++;
 				}
 			}
 	for (int sb = 0; sb < COVER_SUB; sb++) {
@@ -238,12 +248,17 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 			double best = HUGE_VAL;
 
 			for (int32_t i = 0; i < nn; i++) {
-				const struct prim *o = &C->pr[near[i]];
-				double dx = x - o->x, dy = y - o->y,
-				    dz = p[1] - o->z;
+				double dx = x - near[i].x, dy = y - near[i].y,
+				    dz = p[1] - near[i].z;
+				double d2 = dx * dx + dy * dy + dz * dz;
+				double lim = worst + near[i].r - p[2];
 
-				best = fmin(best, sqrt(dx * dx + dy * dy +
-				    dz * dz) - o->r);
+				/* This point cannot raise the worst: next. */
+				if (lim > 0 && d2 <= lim * lim) {
+					best = -HUGE_VAL;
+					break;
+				}
+				best = fmin(best, sqrt(d2) - near[i].r);
 			}
 			worst = fmax(worst, best + p[2]);
 			if (worst >= r)
@@ -490,6 +505,14 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	C.g = 8 * r;
 	if (!C.nocover)
 		cover_init(&C.cover, &C.cv, r, N);
+	/*
+	 * Room for as many as circles of radius r would pack hexagonally,
+	 * and a little more: growing a million by doubling copies it all.
+	 */
+	C.cap = (size_t)fmin((double)N, C.cv.area / (2 * sqrt(3) * r * r) *
+	    1.1 + 4096);
+	C.pr = xreallocarray(NULL, C.cap, sizeof(*C.pr));
+	C.next = xreallocarray(NULL, C.cap, sizeof(*C.next));
 	grid_grow(&C);
 	coll_add(&C, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {

@@ -102,20 +102,30 @@ bez_sub(const double b[4][2], double u0, double u1, double out[4][2])
 		memcpy(out, tmp, sizeof(tmp));
 }
 
-/* Arc length of piece p from 0 to u. */
+/* Arc length of piece p from 0 to u; with area, the area it sweeps. */
 static double
-piece_length(const struct piece *p, double u)
+piece_measure(const struct piece *p, double u, double *area)
 {
-	double sum = 0, h = u / 2;
+	double sum = 0, sweep = 0, h = u / 2;
 
 	for (int i = 0; i < 4; i++)
 		for (int sgn = -1; sgn <= 1; sgn += 2) {
-			double x[2], d[2];
+			double x[2], d[2], ds;
 
 			piece_eval(p, h + sgn * h * gl_x[i], x, d);
-			sum += gl_w[i] * sqrt(d[0] * d[0] + d[1] * d[1]);
+			ds = sqrt(d[0] * d[0] + d[1] * d[1]);
+			sum += gl_w[i] * ds;
+			sweep += gl_w[i] * 2 * M_PI * x[0] * ds;
 		}
+	if (area != NULL)
+		*area = sweep * h;
 	return sum * h;
+}
+
+static double
+piece_length(const struct piece *p, double u)
+{
+	return piece_measure(p, u, NULL);
 }
 
 static double
@@ -132,7 +142,7 @@ int
 curve_init(struct curve *cv, const double (*pts)[2], int npts)
 {
 	int nseg = (npts - 1) / 3;
-	double total = 0, s = 0;
+	double total = 0, s = 0, a;
 	size_t n = 0, *per = xcalloc((size_t)nseg, sizeof(*per));
 
 	memset(cv, 0, sizeof(*cv));
@@ -172,7 +182,8 @@ curve_init(struct curve *cv, const double (*pts)[2], int npts)
 			p->t0 = k + u0;
 			p->t1 = k + u1;
 			p->s0 = s;
-			s += piece_length(p, 1);
+			s += piece_measure(p, 1, &a);
+			cv->area += a;
 			for (int i = 0; i < 4; i++) {
 				if (p->b[i][0] > cv->rho_max)
 					cv->rho_max = p->b[i][0];
@@ -378,18 +389,19 @@ gap(const struct piece *p, double u, const double q[2], double S2,
  * The crossing of a convex g - S2 from below (at lo) to above (at hi).
  * Newton's method from the free side of a convex function stays there
  * and never overshoots: the root lies within one Newton step below
- * hi, so a step under 1e-15 (of a piece) ends it.  It starts where
- * the tangent at lo leaves the disk, if that is free (it mostly is:
- * the curve bends away from the disk less than the disk does).
+ * hi, so a step under 1e-12 of a piece ends it (a few 1e-15 of arc
+ * length on a usual receptacle: below that, rounding in g is all there
+ * is to chase).  It starts where the tangent at lo leaves the disk, or
+ * one Newton step beyond if the curve has bent back in by then.
  * Bisection takes over where rounding has the last word.
  */
-#define U_EPS	1e-15
+#define U_EPS	1e-12
 
 static double
 crossing(const struct piece *p, double lo, double hi, const double q[2],
     double S2)
 {
-	double x[2], d[2], a, b, c, disc, fh, fph, f, fp;
+	double x[2], d[2], a, b, c, disc, fh, fph, f, fp, top = hi;
 
 	piece_eval(p, lo, x, d);
 	x[0] -= q[0];
@@ -401,11 +413,26 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 	if (a > 0 && disc >= 0) {
 		double guess = lo + (-b + sqrt(disc)) / a;
 
-		if (guess > lo && guess < hi &&
-		    (f = gap(p, guess, q, S2, &fp)) >= 0)
-			hi = guess;
+		if (guess > lo && guess < hi) {
+			/*
+			 * Still inside, but rising: a convex function lies
+			 * above its tangent, so the tangent's zero is free.
+			 */
+			if ((f = gap(p, guess, q, S2, &fp)) >= 0)
+				hi = guess;
+			else if (fp > 0) {
+				lo = guess;
+				if (guess - f / fp < hi)
+					hi = guess - f / fp;
+			}
+		}
 	}
-	fh = gap(p, hi, q, S2, &fph);
+	if ((fh = gap(p, hi, q, S2, &fph)) < 0) {
+		/* Rounding put the guess inside: back to the known end. */
+		lo = hi;
+		hi = top;
+		fh = gap(p, hi, q, S2, &fph);
+	}
 	for (int i = 0; i < 100 && hi - lo > U_EPS; i++) {
 		double step = fph > 0 ? fh / fph : HUGE_VAL, nu = hi - step;
 

@@ -27,6 +27,7 @@ struct curve {
 	size_t		 npc;
 	double		 tmax;		/* the number of segments */
 	double		 length;	/* arc length, base to tip */
+	double		 area;		/* of the surface it sweeps */
 	double		 rho_max;	/* widest radius */
 	double		 speed;		/* at least |dp/dt| everywhere */
 };
