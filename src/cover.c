@@ -179,8 +179,8 @@ cover_row(const struct cover *cv, double t)
 	return lo;
 }
 
-void
-cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
+static inline void
+lower(struct cover *cv, int32_t k, int32_t j, double U)
 {
 	uint8_t *u = cell(cv, k, j);
 	/* Rounded up, and a step more: a bound must never shrink. */
@@ -188,6 +188,12 @@ cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 
 	if (steps < *u)
 		*u = steps > 0 ? (uint8_t)steps : 0;
+}
+
+void
+cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
+{
+	lower(cv, k, j, U);
 }
 
 void
@@ -230,7 +236,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			dy = rk * cv->sin_c[j] - y;
 			D2 = dx * dx + dy * dy + dz * dz;
 			if (D2 < reach * reach)
-				cover_lower(cv, k, j, sqrt(D2) - r + cv->d[k]);
+				lower(cv, k, j, sqrt(D2) - r + cv->d[k]);
 		}
 	}
 }
@@ -285,6 +291,22 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		*t = e == cv->rows ? HUGE_VAL : cv->t_row[e];
 		*row = e;
 		return 1;
+	}
+	/* At the head, on a tile boundary: eight rows in one go. */
+	if (k == h && (k & 7) == 0 && k + 8 <= cv->rows) {
+		const uint8_t *run = cell(cv, k, j);
+		uint8_t most = 0;
+
+		for (int i = 0; i < 8; i++)
+			most = run[i] > most ? run[i] : most;
+		if (covered(cv, most, r)) {
+			cv->head[j] = h + 8;
+			if (most > cv->f[j])
+				cv->f[j] = most;
+			*t = k + 8 == cv->rows ? HUGE_VAL : cv->t_row[k + 8];
+			*row = k + 8;
+			return 1;
+		}
 	}
 	u = cell_u(cv, k, j);
 	if (!covered(cv, u, r)) {
