@@ -453,7 +453,7 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 	for (size_t i = 0; i < C->n; i++) {
 		const struct prim *o = &C->pr[i];
 		struct organ *g = &res->organs[i];
-		double p[2], d[2];
+		double p[2], d[2], rho, phi;
 
 		curve_eval(&C->cv, o->t, p, d);
 		if (hypot(d[0], d[1]) < 1e-12 * (C->cv.length + 1)) {
@@ -465,8 +465,14 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 			d[0] = b[0] - a[0];
 			d[1] = b[1] - a[1];
 		}
-		frame_revolution(g, angle_mod360((double)i, alpha), p[0], p[1],
-		    -d[0], -d[1]);
+		rho = hypot(o->x, o->y);
+		phi = angle_mod360((double)i, alpha);
+		/* The angle is in the position already, but for on the axis. */
+		if (rho > 0)
+			frame_revolution_cs(g, phi, o->x / rho, o->y / rho, p[0],
+			    p[1], -d[0], -d[1]);
+		else
+			frame_revolution(g, phi, p[0], p[1], -d[0], -d[1]);
 		/* Exactly the position placed, not a second evaluation. */
 		g->pos[0] = o->x;
 		g->pos[1] = o->y;
@@ -511,8 +517,8 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	 */
 	C.cap = (size_t)fmin((double)N, C.cv.area / (2 * sqrt(3) * r * r) *
 	    1.1 + 4096);
-	C.pr = xreallocarray(NULL, C.cap, sizeof(*C.pr));
-	C.next = xreallocarray(NULL, C.cap, sizeof(*C.next));
+	C.pr = xcalloc_big(C.cap, sizeof(*C.pr));
+	C.next = xcalloc_big(C.cap, sizeof(*C.next));
 	grid_grow(&C);
 	coll_add(&C, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {

@@ -127,7 +127,7 @@ cover_init(struct cover *cv, const struct curve *c, double r0,
 	}
 	cv->tiles_k = (cv->rows + 7) / 8;
 	n = (size_t)cv->tiles_k * (size_t)((cv->cols + 7) / 8) * 64;
-	cv->u = xaligned(64, n);
+	cv->u = xcalloc_big(n, 1);
 	memset(cv->u, U_NONE, n);
 	cv->head = xcalloc((size_t)cv->cols, sizeof(*cv->head));
 	cv->f = xcalloc((size_t)cv->cols, sizeof(*cv->f));
@@ -200,14 +200,13 @@ void
 cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 {
 	/* Rows as far as the bound can bring a cell under GROW r. */
-	int32_t kq = cover_row(cv, t), span;
-	double rows = ceil(GROW * r / cv->a);
+	int32_t kq = cover_row(cv, t), span, k0, k1;
+	double rows = ceil(GROW * r / cv->a), rho = hypot(x, y);
+	double phi = atan2(y, x);
 
 	span = rows < cv->rows ? (int32_t)rows : cv->rows;
-	int32_t k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
-	int32_t k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
-	double rho = hypot(x, y), phi = atan2(y, x);
-
+	k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
+	k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
 	if (phi < 0)
 		phi += 2 * M_PI;
 	for (int32_t k = k0; k <= k1; k++) {
@@ -230,13 +229,22 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		for (int32_t dj = lo; dj <= hi; dj++) {
 			int32_t j = jc + dj;
 			double dx, dy, D2;
+			uint8_t u;
 
 			j += j < 0 ? cv->cols : j >= cv->cols ? -cv->cols : 0;
 			dx = rk * cv->cos_c[j] - x;
 			dy = rk * cv->sin_c[j] - y;
 			D2 = dx * dx + dy * dy + dz * dz;
-			if (D2 < reach * reach)
-				lower(cv, k, j, sqrt(D2) - r + cv->d[k]);
+			if (D2 >= reach * reach)
+				continue;
+			/* No square root where the bound would not drop. */
+			if ((u = *cell(cv, k, j)) != U_NONE) {
+				double L = (u - 2) * cv->q + r - cv->d[k];
+
+				if (L <= 0 || D2 >= L * L)
+					continue;
+			}
+			lower(cv, k, j, sqrt(D2) - r + cv->d[k]);
 		}
 	}
 }

@@ -28,7 +28,14 @@ void
 frame_revolution(struct organ *o, double phi, double rho, double z,
     double t_rho, double t_z)
 {
-	double c = cos(phi * (M_PI / 180)), s = sin(phi * (M_PI / 180));
+	frame_revolution_cs(o, phi, cos(phi * (M_PI / 180)),
+	    sin(phi * (M_PI / 180)), rho, z, t_rho, t_z);
+}
+
+void
+frame_revolution_cs(struct organ *o, double phi, double c, double s,
+    double rho, double z, double t_rho, double t_z)
+{
 	double k = 1 / hypot(t_rho, t_z);
 
 	t_rho *= k;

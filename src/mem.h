@@ -8,6 +8,7 @@ void	*xmalloc(size_t);
 void	*xcalloc(size_t, size_t);
 void	*xreallocarray(void *, size_t, size_t);
 void	*xaligned(size_t align, size_t);
+void	*xcalloc_big(size_t, size_t);
 char	*xstrdup(const char *);
 
 #endif

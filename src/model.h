@@ -41,6 +41,9 @@ void	parastichies(const struct result *, size_t k, int pair[2]);
  */
 void	frame_revolution(struct organ *, double phi, double rho, double z,
 	    double t_rho, double t_z);
+/* The same with phi's cosine and sine at hand. */
+void	frame_revolution_cs(struct organ *, double phi, double c, double s,
+	    double rho, double z, double t_rho, double t_z);
 
 /* n * deg reduced to [0, 360), without the rounding of the product. */
 double	angle_mod360(double n, double deg);

@@ -9,7 +9,7 @@ void
 result_init(struct result *r, size_t count)
 {
 	*r = (struct result){0};
-	r->organs = xcalloc(count, sizeof(*r->organs));
+	r->organs = xcalloc_big(count, sizeof(*r->organs));
 	r->count = count;
 }
 

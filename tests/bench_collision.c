@@ -75,6 +75,7 @@ main(void)
 	    (double)n1 / t1 / 1e6);
 	printf("memory beyond the output: %.0f bytes per primordium\n",
 	    beyond);
+	fflush(stdout);
 	if ((t2 = run(r1 * sqrt(10), 2000000, PLACE_EXACT, &n2)) < 0)
 		return 1;
 	printf("exact walk, same dome at a tenth: %zu primordia in %.3f s "
