@@ -139,6 +139,47 @@ grid_insert(struct coll *C, int32_t i)
 }
 
 /*
+ * How many grid cells a box of half-size q about (x, y, z) spans, and
+ * which: when radii grow far beyond the first one the cells are small
+ * beside the box, and a plain pass over every primordium is cheaper
+ * than a pass over the cells (and cannot hang).
+ */
+static double
+box_cells(const struct coll *C, double x, double y, double z, double q,
+    int32_t lo[3], int32_t hi[3])
+{
+	cell_of(C, x - q, y - q, z - q, lo);
+	cell_of(C, x + q, y + q, z + q, hi);
+	return ((double)hi[0] - lo[0] + 1) * ((double)hi[1] - lo[1] + 1) *
+	    ((double)hi[2] - lo[2] + 1);
+}
+
+/*
+ * If primordium m overlaps the new one of radius r at (x, y, z), on
+ * the meridian (c, s) at curve parameter t, raise *best to where the
+ * curve leaves it.
+ */
+static inline void
+exit_from(const struct coll *C, int32_t m, double t, double x, double y,
+    double z, double c, double s, double r, double *best)
+{
+	const struct prim *o = &C->pr[m];
+	double dx = x - o->x, dy = y - o->y, dz = z - o->z, R = r + o->r;
+	double qm[2], perp, e;
+
+	if (dx * dx + dy * dy + dz * dz >= R * R)
+		return;
+	/* In the meridian plane: a disk. */
+	qm[0] = o->x * c + o->y * s;
+	qm[1] = o->z;
+	perp = o->y * c - o->x * s;
+	e = curve_exit(&C->cv, t, qm, R * R - perp * perp);
+	/* e == t: touching, up to rounding. */
+	if (e > t && e > *best)
+		*best = e;
+}
+
+/*
  * At curve parameter t on the meridian (c, s) = (cos, sin) of the new
  * primordium of radius r: 1 if nothing overlaps it, else 0 and *to the
  * furthest exit from the primordia that do (HUGE_VAL: past the tip).
@@ -147,41 +188,27 @@ static int
 free_at(const struct coll *C, double t, double c, double s, double r,
     double *to)
 {
-	double p[2], x, y, z, q = r + C->rmax, best = -1;
+	double p[2], x, y, z, best = -1;
 	int32_t lo[3], hi[3];
 
 	curve_eval(&C->cv, t, p, NULL);
 	x = p[0] * c;
 	y = p[0] * s;
 	z = p[1];
-	cell_of(C, x - q, y - q, z - q, lo);
-	cell_of(C, x + q, y + q, z + q, hi);
-	for (int32_t i = lo[0]; i <= hi[0]; i++)
-		for (int32_t j = lo[1]; j <= hi[1]; j++)
-			for (int32_t k = lo[2]; k <= hi[2]; k++) {
-				int32_t key[3] = { i, j, k };
-				const struct slot *sl = slot_find(C, key);
+	if (box_cells(C, x, y, z, r + C->rmax, lo, hi) > (double)C->n) {
+		for (size_t m = 0; m < C->n; m++)
+			exit_from(C, (int32_t)m, t, x, y, z, c, s, r, &best);
+	} else
+		for (int32_t i = lo[0]; i <= hi[0]; i++)
+			for (int32_t j = lo[1]; j <= hi[1]; j++)
+				for (int32_t k = lo[2]; k <= hi[2]; k++) {
+					int32_t key[3] = { i, j, k }, m;
 
-				for (int32_t m = sl->head; m >= 0;
-				    m = C->next[m]) {
-					const struct prim *o = &C->pr[m];
-					double dx = x - o->x, dy = y - o->y,
-					    dz = z - o->z, R = r + o->r;
-					double qm[2], perp, e;
-
-					if (dx * dx + dy * dy + dz * dz >= R * R)
-						continue;
-					/* In the meridian plane: a disk. */
-					qm[0] = o->x * c + o->y * s;
-					qm[1] = o->z;
-					perp = o->y * c - o->x * s;
-					e = curve_exit(&C->cv, t, qm,
-					    R * R - perp * perp);
-					/* e == t: touching, up to rounding. */
-					if (e > t && e > best)
-						best = e;
+					for (m = slot_find(C, key)->head; m >= 0;
+					    m = C->next[m])
+						exit_from(C, m, t, x, y, z, c, s,
+						    r, &best);
 				}
-			}
 	if (best < 0)
 		return 1;
 	*to = best;
@@ -207,8 +234,8 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 	} near[64];
 	int32_t nn = 0, lo[3], hi[3];
 
-	cell_of(C, mx - q, my - q, mz - q, lo);
-	cell_of(C, mx + q, my + q, mz + q, hi);
+	if (box_cells(C, mx, my, mz, q, lo, hi) > 64)
+		return 0;	/* radii have outgrown the grid: not worth it */
 	for (int32_t a = lo[0]; a <= hi[0]; a++)
 		for (int32_t b = lo[1]; b <= hi[1]; b++)
 			for (int32_t c = lo[2]; c <= hi[2]; c++) {

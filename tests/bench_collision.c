@@ -1,9 +1,9 @@
 /*
  * bench_collision.c - the collision model's speed and memory (make
- * bench): a million primordia on a hemisphere of radius 1, the same
- * dome at a tenth of the count (same coverage, larger primordia) for
- * the scaling, and the exact walk beside the brute-force reference
- * at about 20,000.
+ * bench): a million primordia on a hemisphere of radius 1 (best of
+ * three runs), the same dome at a tenth of the count (same coverage,
+ * larger primordia) for the scaling, and the exact walk beside the
+ * brute-force reference at about 20,000.
  */
 #include <math.h>
 #include <stdio.h>
@@ -70,6 +70,14 @@ main(void)
 	/* Peak memory less what the result itself holds. */
 	beyond = ((double)(peak_kb() - base) * 1024 -
 	    (double)n1 * sizeof(struct organ)) / (double)n1;
+	/* The best of three: this machine's neighbours come and go. */
+	for (int i = 0; i < 2; i++) {
+		double t = run(r1, 2000000, PLACE_EXACT, &n1);
+
+		if (t < 0)
+			return 1;
+		t1 = fmin(t1, t);
+	}
 	printf("exact walk, full dome: %zu primordia in %.2f s = %.2f us "
 	    "each, %.2f M/s\n", n1, t1, t1 / (double)n1 * 1e6,
 	    (double)n1 / t1 / 1e6);
@@ -78,6 +86,13 @@ main(void)
 	fflush(stdout);
 	if ((t2 = run(r1 * sqrt(10), 2000000, PLACE_EXACT, &n2)) < 0)
 		return 1;
+	for (int i = 0; i < 2; i++) {
+		double t = run(r1 * sqrt(10), 2000000, PLACE_EXACT, &n2);
+
+		if (t < 0)
+			return 1;
+		t2 = fmin(t2, t);
+	}
 	printf("exact walk, same dome at a tenth: %zu primordia in %.3f s "
 	    "= %.2f us each\n", n2, t2, t2 / (double)n2 * 1e6);
 	printf("scaling: time(%zu) / time(%zu) = %.1f for %.1fx the "
