@@ -25,7 +25,7 @@
 #include "cover.h"
 #include "mem.h"
 
-#define CELL_FRAC	0.5	/* row height, as a fraction of r0 */
+#define CELL_FRAC	0.6	/* row height, as a fraction of r0 */
 #define CELLS_MIN	(1 << 16)
 #define CELLS_PER_ORGAN	32	/* at most, of the count bound */
 #define CELLS_MAX	(1 << 26)
