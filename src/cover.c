@@ -26,7 +26,7 @@
 #include "mem.h"
 
 #define CELL_FRAC	0.6	/* row height, as a fraction of r0 */
-#define CELLS_MIN	(1 << 16)
+#define CELLS_MIN	(1 << 12)
 #define CELLS_PER_ORGAN	32	/* at most, of the count bound */
 #define CELLS_MAX	(1 << 26)
 #define U_NONE		UINT8_MAX
@@ -79,10 +79,17 @@ cover_init(struct cover *cv, const struct curve *c, double r0,
 		most = CELLS_MIN;
 	if (most > CELLS_MAX)
 		most = CELLS_MAX;
-	/* Fewer, larger cells if there would be too many: coarser skips. */
+	/*
+	 * Fewer, larger cells if there would be too many: coarser skips.
+	 * A receptacle narrower than a cell has one column, and then
+	 * only the rows count.
+	 */
 	cells = ceil(L / a) * fmax(1, ceil(W / a));
-	if (cells > most)
-		a = sqrt(L * fmax(W, a) / most) * 1.01;
+	if (cells > most) {
+		a = sqrt(L * W / most) * 1.01;
+		if (!(W > a))
+			a = L / most * 1.01;
+	}
 	cv->a = a;
 	cv->rows = (int32_t)fmax(1, ceil(L / a));
 	cv->cols = (int32_t)fmax(1, ceil(W / a));

@@ -222,6 +222,14 @@ assert "one line" '[ $(wc -l <$OUT/stderr) -eq 1 ]'
 assert "escaped" 'grep -q "Bad\\\\x01\\\\x0aName" $OUT/stderr'
 end
 
+# Found by fuzzing: a profile a billion units tall once made the cover
+# map millions of rows of one column, fifteen seconds to set up.
+printf 'model = "collision";\ncount = 400;\ncollision = {\n  receptacle = { profile = ((1, 1), (1.05, 0.4), (1.05, 0.8), (0.95, 1.2), (0.8, 1444444415), (0.4, 148), (0, 1.8)); };\n  radius = 0.08;\n};\n' >"$OUT/tall.cfg"
+try "collision: a profile a billion units tall places its primordia" px --info "$OUT/tall.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "400 placed" 'grep -qx "primordia: 400" $OUT/stdout'
+end
+
 # Big outputs: skipped under valgrind (RUN set), where they take minutes.
 if [ -n "$RUN" ]; then
 	skip "big outputs under $RUN"
