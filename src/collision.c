@@ -29,6 +29,7 @@
 #include "receptacle.h"
 
 #define COUNT_DEFAULT	1000000	/* primordia when count is not given */
+#define COUNT_MOST	5000000	/* 180 bytes each: under 1 GiB */
 #define PROGRESS_EVERY	16384
 
 void	(*model_progress)(long long done, int last);
@@ -519,6 +520,11 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	long long N = scene_given(sc, "count") ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
 
+	if (N > COUNT_MOST) {
+		scene_error(sc, "count", "count %lld is more than the collision "
+		    "model places, %d", N, COUNT_MOST);
+		return -1;
+	}
 	if (sc->coll.radius.e == NULL) {
 		scene_error(sc, "collision", "missing setting "
 		    "'collision.radius' (the primordia's radius)");
