@@ -10,8 +10,10 @@
  * F <= F(m) + d throughout.  cover_add lowers that bound in the cells
  * around each new primordium; a cell bounded below r is skipped whole.
  * A packing of circles of radius r leaves no point further than about
- * 1.15 r from a centre, so cells of a = r/2 are covered as soon as
- * their neighbours are placed; only the front and true holes are not.
+ * 1.15 r from a centre, so cells a little over r/2 a side (d about
+ * 0.6 r) are mostly covered as soon as their neighbours are placed;
+ * the front and true holes are not, and loose packings leave some
+ * cells to refine (collision.c) or to look at exactly.
  *
  * Each column also remembers how many rows from the base are covered,
  * and the largest bound among them, so a walk jumps over all of them
