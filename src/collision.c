@@ -297,38 +297,22 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 	return 1;
 }
 
-/* The same walk without the cover map: the check that it skips only what is covered. */
-static double
-place_plain(const struct coll *C, double t0, double c, double s, double r)
-{
-	double t = t0, to;
-
-	while (t <= C->cv.tmax) {
-		if (free_at(C, t, c, s, r, &to))
-			return t;
-		t = to;
-	}
-	return HUGE_VAL;
-}
-
 /* The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none. */
 static double
 place_exact(struct coll *C, double t0, double phi, double c, double s,
     double r)
 {
-	int32_t j, k = -1;
+	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
 	double t = t0, to;
 
-	if (C->nocover)
-		return place_plain(C, t0, c, s, r);
-	j = cover_col(&C->cover, phi);
 	while (t <= C->cv.tmax) {
-		if (cover_skip(&C->cover, &t, j, r, &k))
+		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k))
 			continue;
 		if (free_at(C, t, c, s, r, &to))
 			return t;
 		/* Blocked across a cell that holds up the column's prefix. */
-		if (k == C->cover.head[j] && to >= C->cover.t_row[k + 1]) {
+		if (!C->nocover && k == C->cover.head[j] &&
+		    to >= C->cover.t_row[k + 1]) {
 			if (!refine(C, k, j, r))
 				cover_passed(&C->cover, j, k);
 		}

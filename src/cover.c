@@ -285,6 +285,24 @@ prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
 	return cv->head[j];
 }
 
+/* Move the walk to the start of row k (past the tip if there is none). */
+static int
+move_to(const struct cover *cv, double *t, int32_t *row, int32_t k)
+{
+	*t = k == cv->rows ? HUGE_VAL : cv->t_row[k];
+	*row = k;
+	return 1;
+}
+
+/* Column j's prefix grows by n rows, the largest bound among them most. */
+static void
+prefix_grow(struct cover *cv, int32_t j, int32_t n, uint8_t most)
+{
+	cv->head[j] += n;
+	if (most > cv->f[j])
+		cv->f[j] = most;
+}
+
 int
 cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 {
@@ -297,17 +315,12 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t) ||
 	    (k + 1 < cv->rows && !(*t < cv->t_row[k + 1])))
 		k = cover_row(cv, *t);
+	*row = k;
 	h = cv->head[j];
 	if (k < h) {
 		int32_t e = prefix_next(cv, j, k, r);
 
-		if (e == k) {
-			*row = k;
-			return 0;
-		}
-		*t = e == cv->rows ? HUGE_VAL : cv->t_row[e];
-		*row = e;
-		return 1;
+		return e == k ? 0 : move_to(cv, t, row, e);
 	}
 	/* At the head, on a tile boundary: eight rows in one go. */
 	if (k == h && (k & 7) == 0 && k + 8 <= cv->rows) {
@@ -317,27 +330,15 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		for (int i = 0; i < 8; i++)
 			most = run[i] > most ? run[i] : most;
 		if (covered(cv, most, r)) {
-			cv->head[j] = h + 8;
-			if (most > cv->f[j])
-				cv->f[j] = most;
-			*t = k + 8 == cv->rows ? HUGE_VAL : cv->t_row[k + 8];
-			*row = k + 8;
-			return 1;
+			prefix_grow(cv, j, 8, most);
+			return move_to(cv, t, row, k + 8);
 		}
 	}
-	u = cell_u(cv, k, j);
-	if (!covered(cv, u, r)) {
-		*row = k;
+	if (!covered(cv, u = cell_u(cv, k, j), r))
 		return 0;
-	}
-	if (k == h) {
-		cv->head[j] = h + 1;
-		if (u > cv->f[j])
-			cv->f[j] = u;
-	}
-	*t = k + 1 == cv->rows ? HUGE_VAL : cv->t_row[k + 1];
-	*row = k + 1;
-	return 1;
+	if (k == h)
+		prefix_grow(cv, j, 1, u);
+	return move_to(cv, t, row, k + 1);
 }
 
 void

@@ -451,7 +451,11 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 	return hi;
 }
 
-/* The first u in [u0, u1] at which piece p (there b) is free; -1: none. */
+/*
+ * The first u in [u0, u1] at which piece p is free; -1: none.  b holds
+ * the control points of that part of p, or of a larger part when the
+ * piece is convex for this disk anyway (only its box is used then).
+ */
 static double
 exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
     const double q[2], double S2, double kappa)
@@ -485,32 +489,27 @@ exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
 double
 curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 {
-	double u, b[4][2];
+	double u, part[4][2];
 	size_t i = piece_find(cv, t, &u);
 
 	for (; i < cv->npc; i++, u = 0) {
 		const struct piece *p = &cv->pc[i];
-		double e, near2, far2, fp;
+		const double (*b)[2] = (const double (*)[2])p->b;
+		double e, near2, far2;
 
 		/*
-		 * Mostly the disk is small beside the piece and the piece
-		 * is convex for it: then no need to cut out the part from u.
+		 * The part from u on, for its box; but where the piece is
+		 * convex for this disk even by its whole box (mostly: the
+		 * disk is small beside the piece), that box will do.
 		 */
-		box_dist((const double (*)[2])p->b, q, &near2, &far2);
-		if (u > 0 && far2 < p->kappa * p->kappa) {
-			if (gap(p, u, q, S2, &fp) >= 0)
-				return t;
-			if (gap(p, 1, q, S2, &fp) < 0)
-				continue;
-			return p->t0 + crossing(p, u, 1, q, S2) *
-			    (p->t1 - p->t0);
+		if (u > 0) {
+			box_dist(b, q, &near2, &far2);
+			if (!(far2 < p->kappa * p->kappa)) {
+				bez_sub(b, u, 1, part);
+				b = (const double (*)[2])part;
+			}
 		}
-		if (u > 0)
-			bez_sub((const double (*)[2])p->b, u, 1, b);
-		else
-			memcpy(b, p->b, sizeof(b));
-		if ((e = exit_sub(p, (const double (*)[2])b, u, 1, q, S2,
-		    p->kappa)) >= 0)
+		if ((e = exit_sub(p, b, u, 1, q, S2, p->kappa)) >= 0)
 			return p->t0 + e * (p->t1 - p->t0);
 	}
 	return HUGE_VAL;

@@ -56,18 +56,6 @@ xreallocarray(void *old, size_t n, size_t sz)
 	return p;
 }
 
-/* size bytes aligned to align (a power of two dividing size's multiple). */
-void *
-xaligned(size_t align, size_t sz)
-{
-	size_t whole = (sz + align - 1) / align * align;
-	void *p = aligned_alloc(align, whole ? whole : align);
-
-	if (p == NULL)
-		nomem();
-	return p;
-}
-
 /*
  * n zeroed items of sz bytes for an array of a million or more organs:
  * on Linux in huge pages where the kernel gives them on request, which

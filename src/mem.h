@@ -7,7 +7,6 @@
 void	*xmalloc(size_t);
 void	*xcalloc(size_t, size_t);
 void	*xreallocarray(void *, size_t, size_t);
-void	*xaligned(size_t align, size_t);
 void	*xcalloc_big(size_t, size_t);
 char	*xstrdup(const char *);
 

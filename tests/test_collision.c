@@ -14,7 +14,6 @@
  * Prints "ok"/"not ok" lines.
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,23 +21,10 @@
 #include "model.h"
 #include "receptacle.h"
 #include "scene.h"
+#include "check.h"
 
 #define TOL	1e-9
 
-static int failures;
-
-static void
-check(int ok, const char *fmt, ...)
-{
-	va_list ap;
-
-	printf("%s - collision: ", ok ? "ok" : "not ok");
-	va_start(ap, fmt);
-	vprintf(fmt, ap);
-	va_end(ap);
-	putchar('\n');
-	failures += !ok;
-}
 
 static const struct {
 	const char	*what;
@@ -206,6 +192,16 @@ agreement(const char *what, const struct scene *sc, const struct result *x)
 	result_free(&br);
 }
 
+/* A collision scene from the settings after its model line. */
+static int
+load(struct scene *sc, const char *cfg)
+{
+	char text[1024];
+
+	snprintf(text, sizeof(text), "model = \"collision\";\n%s\n", cfg);
+	return scene_load_buffer(sc, "test.cfg", text, strlen(text));
+}
+
 /*
  * The cover map only ever skips covered receptacle: with it and
  * without it, the walk places the same, on structures large enough
@@ -232,14 +228,11 @@ static void
 cover_agrees(void)
 {
 	for (size_t i = 0; i < sizeof(large) / sizeof(large[0]); i++) {
-		char text[1024];
 		struct scene sc;
 		struct result a = { 0 }, b = { 0 };
 		double worst = 0;
 
-		snprintf(text, sizeof(text), "model = \"collision\";\n%s\n",
-		    large[i].cfg);
-		if (scene_load_buffer(&sc, "test.cfg", text, strlen(text)) != 0 ||
+		if (load(&sc, large[i].cfg) != 0 ||
 		    collision_place(&sc, &a, PLACE_EXACT) != 0 ||
 		    collision_place(&sc, &b, PLACE_PLAIN) != 0) {
 			check(0, "%s: scene loads and runs", large[i].what);
@@ -263,15 +256,13 @@ cover_agrees(void)
 int
 main(void)
 {
+	check_topic = "collision: ";
 	cover_agrees();
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
-		char text[1024];
 		struct scene sc;
 		struct result res = { 0 };
 
-		snprintf(text, sizeof(text), "model = \"collision\";\n%s\n",
-		    cases[i].cfg);
-		if (scene_load_buffer(&sc, "test.cfg", text, strlen(text)) != 0 ||
+		if (load(&sc, cases[i].cfg) != 0 ||
 		    collision_place(&sc, &res, PLACE_EXACT) != 0) {
 			check(0, "%s: scene loads and runs", cases[i].what);
 			scene_free(&sc);
@@ -282,5 +273,5 @@ main(void)
 		result_free(&res);
 		scene_free(&sc);
 	}
-	return failures != 0;
+	return check_failures != 0;
 }

@@ -5,29 +5,15 @@
  * third parastichy touches.  Prints "ok"/"not ok" lines.
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cyl.h"
 #include "model.h"
 #include "scene.h"
+#include "check.h"
 #include "vec.h"
 
-static int failures;
-
-static void
-check(int ok, const char *fmt, ...)
-{
-	va_list ap;
-
-	printf("%s - cylinder: ", ok ? "ok" : "not ok");
-	va_start(ap, fmt);
-	vprintf(fmt, ap);
-	va_end(ap);
-	putchar('\n');
-	failures += !ok;
-}
 
 /* ABOP Table 4.1, the 15 rows with a diameter. */
 static const struct {
@@ -245,9 +231,10 @@ test_model(void)
 int
 main(void)
 {
+	check_topic = "cylinder: ";
 	test_table();
 	test_encyclic();
 	test_pairs();
 	test_model();
-	return failures != 0;
+	return check_failures != 0;
 }

@@ -4,26 +4,12 @@
  * Prints "ok - what" / "not ok - what" lines for tests/run.sh.
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "expr.h"
+#include "check.h"
 
-static int failures;
-
-static void
-check(int ok, const char *fmt, ...)
-{
-	va_list ap;
-
-	printf("%s - expr: ", ok ? "ok" : "not ok");
-	va_start(ap, fmt);
-	vprintf(fmt, ap);
-	va_end(ap);
-	putchar('\n');
-	failures += !ok;
-}
 
 /* n = 7, N = 11, t = 0.7, s = 0.25, r = 0.5, phi = 90, h = 2, seed 42 */
 static struct expr_env env = {
@@ -256,10 +242,11 @@ test_rand(void)
 int
 main(void)
 {
+	check_topic = "expr: ";
 	test_precedence();
 	test_names();
 	test_errors();
 	test_runtime();
 	test_rand();
-	return failures != 0;
+	return check_failures != 0;
 }

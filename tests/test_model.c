@@ -4,7 +4,6 @@
  * "ok - what" or "not ok - what"; tests/run.sh counts them.
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,22 +11,9 @@
 #include "model.h"
 #include "numfmt.h"
 #include "scene.h"
+#include "check.h"
 #include "vec.h"
 
-static int failures;
-
-static void
-check(int ok, const char *fmt, ...)
-{
-	va_list ap;
-
-	printf("%s - ", ok ? "ok" : "not ok");
-	va_start(ap, fmt);
-	vprintf(fmt, ap);
-	va_end(ap);
-	putchar('\n');
-	failures += !ok;
-}
 
 /* A deterministic stream of doubles for the formatter checks. */
 static unsigned long long rng = 0x9e3779b97f4a7c15ull;
@@ -499,5 +485,5 @@ main(void)
 	test_variants();
 	test_transforms();
 	test_unterminated();
-	return failures != 0;
+	return check_failures != 0;
 }
