@@ -17,6 +17,7 @@
  * skips it a cell at a time.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +35,37 @@
 
 void	(*model_progress)(long long done, int last);
 
+enum { CO_RECEPTACLE, CO_RADIUS, CO_EPSILON, CO__N };
+
+struct collision {
+	struct group_at	 at;
+	int		 given[CO__N];
+	struct receptacle receptacle;
+	struct expr_setting radius;	/* of primordium n */
+	struct expr_setting epsilon;	/* how far t may fall back */
+};
+
+#define CO(f)	offsetof(struct collision, f)
+
+static const struct row collision_rows[] = {
+	[CO_RECEPTACLE] = { .name = "receptacle", .type = T_GROUP,
+	  .off = CO(receptacle), .sub = &receptacle_table,
+	  .doc = "the surface of revolution the primordia sit on" },
+	[CO_RADIUS] = { .name = "radius", .type = T_EXPR, .off = CO(radius),
+	  .defstr = "none",
+	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .doc = "radius of primordium n" },
+	[CO_EPSILON] = { .name = "epsilon", .type = T_EXPR,
+	  .off = CO(epsilon), .defstr = "none",
+	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T) |
+	  EXPR_VAR(V_R),
+	  .doc = "arc length t may fall back below the last primordium; "
+	  "\"r\": its radius" },
+};
+
+static const struct table collision_table = TABLE(collision_rows,
+    struct collision);
+
 struct prim {
 	double	 x, y, z, r, t;
 };
@@ -46,6 +78,7 @@ struct slot {
 
 struct coll {
 	const struct scene *sc;
+	const struct collision *p;
 	struct curve	 cv;
 	struct prim	*pr;
 	size_t		 n, cap;
@@ -398,29 +431,30 @@ radius_at(const struct coll *C, struct expr_env *env, long long n,
     long long N, double *r, double *eps)
 {
 	const struct scene *sc = C->sc;
+	const struct collision *P = C->p;
 
 	env->n = n;
 	env->var[V_N] = (double)n;
 	env->var[V_COUNT] = (double)N;
 	env->var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
-	if (scene_eval(sc, &sc->coll.radius, "collision.radius", "primordium",
+	if (scene_eval(sc, &P->radius, "collision.radius", "primordium",
 	    env, r) != 0)
 		return -1;
 	if (!(*r > 0)) {
-		diag(ST_SCENE, sc->file, sc->coll.radius.line, 0,
+		diag(ST_SCENE, sc->file, P->radius.line, 0,
 		    "collision.radius is %.9g at primordium %lld; it must be "
 		    "positive", *r, n);
 		return -1;
 	}
 	*eps = -1;
-	if (sc->coll.epsilon.e == NULL)
+	if (P->epsilon.e == NULL)
 		return 0;
 	env->var[V_R] = *r;
-	if (scene_eval(sc, &sc->coll.epsilon, "collision.epsilon",
+	if (scene_eval(sc, &P->epsilon, "collision.epsilon",
 	    "primordium", env, eps) != 0)
 		return -1;
 	if (*eps < 0) {
-		diag(ST_SCENE, sc->file, sc->coll.epsilon.line, 0,
+		diag(ST_SCENE, sc->file, P->epsilon.line, 0,
 		    "collision.epsilon is %.9g at primordium %lld; it must be "
 		    "at least 0", *eps, n);
 		return -1;
@@ -460,8 +494,6 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 {
 	result_init(res, C->n);
 	res->divergence = alpha;
-	res->objects = C->sc->objects;
-	res->nobjects = C->sc->nobjects;
 	for (size_t i = 0; i < C->n; i++) {
 		const struct prim *o = &C->pr[i];
 		struct organ *g = &res->organs[i];
@@ -499,26 +531,27 @@ collision_place(const struct scene *sc, struct result *res, int how)
 {
 	int brute = how == PLACE_BRUTE;
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
-	struct coll C = { .sc = sc, .nocover = how != PLACE_EXACT };
+	const struct collision *P = sc->params;
+	struct coll C = { .sc = sc, .p = P, .nocover = how != PLACE_EXACT };
 	double (*pts)[2], alpha = sc->divergence, r, eps;
-	long long N = scene_given(sc, "count") ? sc->count : COUNT_DEFAULT;
+	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
 
 	if (N > COUNT_MOST) {
-		scene_error(sc, "count", "count %lld is more than the collision "
-		    "model places, %d", N, COUNT_MOST);
+		scene_error(sc, sc->given[S_COUNT], "count %lld is more than "
+		    "the collision model places, %d", N, COUNT_MOST);
 		return -1;
 	}
-	if (sc->coll.radius.e == NULL) {
-		scene_error(sc, "collision", "missing setting "
+	if (P->radius.e == NULL) {
+		scene_error(sc, GIVEN_AT(P, CO_RADIUS), "missing setting "
 		    "'collision.radius' (the primordia's radius)");
 		return -1;
 	}
-	if ((pts = receptacle_points(sc, &npts)) == NULL)
+	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
 		return -1;
 	if (curve_init(&C.cv, (const double (*)[2])pts, npts) != 0) {
-		scene_error(sc, "collision.receptacle", "the receptacle's "
-		    "profile has no length");
+		scene_error(sc, GIVEN_AT(&P->receptacle, RC_PROFILE),
+		    "the receptacle's profile has no length");
 		free(pts);
 		return -1;
 	}
@@ -557,8 +590,8 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	full = (long long)C.n == N;
 	if (model_progress != NULL)
 		model_progress((long long)C.n, 1);
-	if (full && !scene_given(sc, "count"))
-		diag(ST_OK, sc->file, sc->coll.radius.line, 0, "stopped at %d "
+	if (full && !sc->given[S_COUNT])
+		diag(ST_OK, sc->file, P->radius.line, 0, "stopped at %d "
 		    "primordia, the default bound, with room left on the "
 		    "receptacle; set count to place more", COUNT_DEFAULT);
 	fill_result(&C, alpha, res);
@@ -574,8 +607,25 @@ out:
 	return rc;
 }
 
-int
-collision_run(const struct scene *sc, struct result *res)
+const struct receptacle *
+collision_receptacle(const struct scene *sc)
 {
+	return &((const struct collision *)sc->params)->receptacle;
+}
+
+static int
+collision_run(const struct scene *sc, const void *params, struct result *res)
+{
+	(void)params;		/* collision_place finds them in sc */
 	return collision_place(sc, res, PLACE_EXACT);
 }
+
+const struct model collision_model = {
+	.name = "collision",
+	.help = "Fowler, Prusinkiewicz & Battjes: primordia packed on a "
+	    "receptacle",
+	.settings = &collision_table,
+	.size = sizeof(struct collision),
+	.run = collision_run,
+	.svg = PROJ_TOP,
+};

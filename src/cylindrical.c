@@ -10,6 +10,7 @@
  * as on a spruce cone or ABOP's Carex spike.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 
 #include "cyl.h"
@@ -17,7 +18,37 @@
 #include "mem.h"
 #include "model.h"
 
-#define GOLDEN_DEG	137.50776405003785
+enum { CY_RADIUS, CY_PARASTICHIES, CY_RISE, CY_LENGTH, CY__N };
+
+struct cylindrical {
+	struct group_at	 at;
+	int		 given[CY__N];
+	struct expr_setting radius;	/* of the cylinder; may vary */
+	struct int_list	 parastichies;
+	double		 rise;		/* on a cylinder of radius 1 */
+	double		 length;
+};
+
+#define C(f)	offsetof(struct cylindrical, f)
+
+static const struct row cylindrical_rows[] = {
+	[CY_RADIUS] = { .name = "radius", .type = T_EXPR, .off = C(radius),
+	  .defstr = "1",
+	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .doc = "radius of the cylinder; an expression of t tapers it" },
+	[CY_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
+	  .off = C(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
+	  .doc = "contact parastichy pair [m, n] or triple [m, n, m+n]" },
+	[CY_RISE] = { .name = "rise", .type = T_FLOAT, .off = C(rise),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .doc = "height between consecutive organs, for radius 1" },
+	[CY_LENGTH] = { .name = "length", .type = T_FLOAT, .off = C(length),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .doc = "length of the structure instead of count" },
+};
+
+static const struct table cylindrical_table = TABLE(cylindrical_rows,
+    struct cylindrical);
 
 /* Divergence, rise and diameter, and what the pattern is. */
 struct pattern {
@@ -39,10 +70,11 @@ gcd(int a, int b)
 
 /* The pattern from cylindrical.parastichies, with every check. */
 static int
-from_parastichies(const struct scene *sc, struct pattern *p)
+from_parastichies(const struct scene *sc, const struct cylindrical *cy,
+    struct pattern *p)
 {
-	const struct int_list *par = &sc->cyl.parastichies;
-	const char *at = "cylindrical.parastichies";
+	const struct int_list *par = &cy->parastichies;
+	int at = cy->given[CY_PARASTICHIES];
 	int m = par->v[0], n = par->v[1];
 
 	if (m >= n) {
@@ -66,21 +98,21 @@ from_parastichies(const struct scene *sc, struct pattern *p)
 			return -1;
 		}
 		cyl_triple(m, n, &p->alpha, &p->h, &p->d);
-		if (scene_given(sc, "divergence")) {
-			scene_error(sc, "divergence", "the triple (%d, %d, %d) "
+		if (sc->given[S_DIVERGENCE]) {
+			scene_error(sc, sc->given[S_DIVERGENCE], "the triple (%d, %d, %d) "
 			    "fixes the divergence at %.6f; leave divergence "
 			    "out", m, n, m + n, p->alpha);
 			return -1;
 		}
 		return 0;
 	}
-	if (!scene_given(sc, "divergence"))
+	if (!sc->given[S_DIVERGENCE])
 		/* The golden angle where it fits, else the range's middle. */
-		p->alpha = GOLDEN_DEG >= p->lo && GOLDEN_DEG <= p->hi ?
-		    GOLDEN_DEG : (p->lo + p->hi) / 2;
+		p->alpha = GOLDEN_ANGLE >= p->lo && GOLDEN_ANGLE <= p->hi ?
+		    GOLDEN_ANGLE : (p->lo + p->hi) / 2;
 	else if (cyl_fold(sc->divergence) < p->lo - 1e-9 ||
 	    cyl_fold(sc->divergence) > p->hi + 1e-9) {
-		scene_error(sc, "divergence", "divergence %.9g is outside "
+		scene_error(sc, sc->given[S_DIVERGENCE], "divergence %.9g is outside "
 		    "[%.3f, %.3f] for parastichies (%d, %d)", sc->divergence,
 		    p->lo, p->hi, m, n);
 		return -1;
@@ -88,7 +120,7 @@ from_parastichies(const struct scene *sc, struct pattern *p)
 		p->alpha = sc->divergence;
 	if (cyl_pair(m, n, p->alpha, &p->h, &p->d) != 0) {
 		/* Only at a range end can rounding tip it over. */
-		scene_error(sc, "divergence", "no (%d, %d) pattern at "
+		scene_error(sc, GIVEN_AT(sc, S_DIVERGENCE), "no (%d, %d) pattern at "
 		    "divergence %.9g", m, n, p->alpha);
 		return -1;
 	}
@@ -96,23 +128,25 @@ from_parastichies(const struct scene *sc, struct pattern *p)
 }
 
 static int
-pattern_find(const struct scene *sc, struct pattern *p)
+pattern_find(const struct scene *sc, const struct cylindrical *cy,
+    struct pattern *p)
 {
-	int have_par = scene_given(sc, "cylindrical.parastichies") != 0;
-	int have_rise = scene_given(sc, "cylindrical.rise") != 0;
+	int have_par = cy->given[CY_PARASTICHIES] != 0;
+	int have_rise = cy->given[CY_RISE] != 0;
 
 	if (have_par == have_rise) {
-		scene_error(sc, have_par ? "cylindrical.rise" : "cylindrical",
+		scene_error(sc, have_par ? cy->given[CY_RISE] :
+		    GIVEN_AT(cy, CY_RISE),
 		    "give cylindrical.parastichies or cylindrical.rise, %s",
 		    have_par ? "not both" : "one of them");
 		return -1;
 	}
 	if (have_par)
-		return from_parastichies(sc, p);
+		return from_parastichies(sc, cy, p);
 	p->alpha = sc->divergence;
-	p->h = sc->cyl.rise;
+	p->h = cy->rise;
 	if (cyl_contacts(p->alpha, p->h, &p->m, &p->n, &p->d) != 0) {
-		scene_error(sc, "cylindrical.rise", "rise %.9g is too small to "
+		scene_error(sc, cy->given[CY_RISE], "rise %.9g is too small to "
 		    "find the contact parastichies", p->h);
 		return -1;
 	}
@@ -122,33 +156,34 @@ pattern_find(const struct scene *sc, struct pattern *p)
 
 /* How many organs: count, or as many as fit in cylindrical.length. */
 static long long
-organ_count(const struct scene *sc, const struct pattern *p, double R)
+organ_count(const struct scene *sc, const struct cylindrical *cy,
+    const struct pattern *p, double R)
 {
-	int have_len = scene_given(sc, "cylindrical.length") != 0;
+	int have_len = cy->given[CY_LENGTH];
 	double n;
 
-	if (scene_given(sc, "count") && have_len) {
-		scene_error(sc, "cylindrical.length", "give count or "
-		    "cylindrical.length, not both");
+	if (sc->given[S_COUNT] && have_len) {
+		scene_error(sc, have_len, "give count or cylindrical.length, "
+		    "not both");
 		return -1;
 	}
 	if (!have_len) {
-		if (!scene_given(sc, "count")) {
-			scene_error(sc, "count", "missing setting 'count' (or "
+		if (!sc->given[S_COUNT]) {
+			scene_error(sc, 1, "missing setting 'count' (or "
 			    "cylindrical.length)");
 			return -1;
 		}
 		return sc->count;
 	}
-	if (R < 0) {
-		scene_error(sc, "cylindrical.length", "cylindrical.length "
-		    "needs a constant cylindrical.radius; give count instead");
+	if (R == 0) {
+		scene_error(sc, have_len, "cylindrical.length needs a constant "
+		    "cylindrical.radius; give count instead");
 		return -1;
 	}
-	n = floor(sc->cyl.length / (p->h * R) + 1e-9) + 1;
+	n = floor(cy->length / (p->h * R) + 1e-9) + 1;
 	if (n > COUNT_MAX) {
-		scene_error(sc, "cylindrical.length", "cylindrical.length %.9g "
-		    "holds %.0f organs, more than %d", sc->cyl.length, n,
+		scene_error(sc, have_len, "cylindrical.length %.9g "
+		    "holds %.0f organs, more than %d", cy->length, n,
 		    COUNT_MAX);
 		return -1;
 	}
@@ -157,10 +192,10 @@ organ_count(const struct scene *sc, const struct pattern *p, double R)
 
 /* Organ k's radius; an error names the organ. */
 static int
-radius_at(const struct scene *sc, struct expr_env *env, long long k,
-    long long N, double *rho)
+radius_at(const struct scene *sc, const struct cylindrical *cy,
+    struct expr_env *env, long long k, long long N, double *rho)
 {
-	const struct expr_setting *es = &sc->cyl.radius;
+	const struct expr_setting *es = &cy->radius;
 
 	if (es->e == NULL) {
 		*rho = 1;
@@ -179,33 +214,34 @@ radius_at(const struct scene *sc, struct expr_env *env, long long k,
 	return -1;
 }
 
-int
-cylindrical_run(const struct scene *sc, struct result *res)
+static int
+cylindrical_run(const struct scene *sc, const void *params,
+    struct result *res)
 {
+	const struct cylindrical *cy = params;
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	struct pattern p;
-	double Rconst = -1, *rho, *z;
+	double Rconst = 0, *rho, *z;	/* 0: the radius varies */
 	long long N;
 	int dm, dn;
 
-	if (pattern_find(sc, &p) != 0)
+	if (pattern_find(sc, cy, &p) != 0)
 		return -1;
-	if (sc->cyl.radius.e == NULL)
+	if (cy->radius.e == NULL)
 		Rconst = 1;
-	else
-		expr_is_constant(sc->cyl.radius.e, &Rconst);
-	if ((N = organ_count(sc, &p, Rconst)) < 0)
-		return -1;
-	if (Rconst <= 0 && Rconst != -1) {
-		scene_error(sc, "cylindrical.radius", "cylindrical.radius must "
-		    "be positive");
+	else if (expr_is_constant(cy->radius.e, &Rconst) && !(Rconst > 0)) {
+		/* Before the count, which a constant radius may decide. */
+		scene_error(sc, cy->given[CY_RADIUS], "cylindrical.radius "
+		    "%.9g must be positive", Rconst);
 		return -1;
 	}
+	if ((N = organ_count(sc, cy, &p, Rconst)) < 0)
+		return -1;
 
 	rho = xcalloc((size_t)N, sizeof(*rho));
 	z = xcalloc((size_t)N, sizeof(*z));
 	for (long long k = 0; k < N; k++) {
-		if (radius_at(sc, &env, k, N, &rho[k]) != 0) {
+		if (radius_at(sc, cy, &env, k, N, &rho[k]) != 0) {
 			free(rho);
 			free(z);
 			return -1;
@@ -217,8 +253,6 @@ cylindrical_run(const struct scene *sc, struct result *res)
 
 	result_init(res, (size_t)N);
 	res->divergence = p.alpha;
-	res->objects = sc->objects;
-	res->nobjects = sc->nobjects;
 	for (long long k = 0; k < N; k++) {
 		long long a = k > 0 ? k - 1 : k, b = k + 1 < N ? k + 1 : k;
 		double slope = b > a && z[b] > z[a] ?
@@ -242,3 +276,12 @@ cylindrical_run(const struct scene *sc, struct result *res)
 	result_info(res, "diameter", 1, p.d);
 	return 0;
 }
+
+const struct model cylindrical_model = {
+	.name = "cylindrical",
+	.help = "van Iterson: a parastichy pair on a cylinder, or a taper",
+	.settings = &cylindrical_table,
+	.size = sizeof(struct cylindrical),
+	.run = cylindrical_run,
+	.svg = PROJ_UNROLL,
+};

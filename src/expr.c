@@ -25,9 +25,9 @@
 #include <string.h>
 
 #include "expr.h"
+#include "phyllo.h"
 #include "mem.h"
 
-#define GOLDEN_DEG	137.50776405003785	/* 360 (2 - golden ratio) */
 
 enum op {
 	OP_CONST, OP_VAR, OP_NEG, OP_NOT,
@@ -270,7 +270,7 @@ name(struct parser *P)
 		return;
 	}
 	if (len == 6 && strncmp(at, "golden", 6) == 0) {
-		emit(P, OP_CONST, 0, GOLDEN_DEG, 1);
+		emit(P, OP_CONST, 0, GOLDEN_ANGLE, 1);
 		return;
 	}
 	for (int v = 0; v < V__MAX; v++)

@@ -11,37 +11,16 @@
 #include <unistd.h>
 
 #include "diag.h"
+#include "mem.h"
+#include "phyllo.h"
 #include "model.h"
 #include "output.h"
 #include "scene.h"
 #include "writer.h"
 
-#ifndef VERSION
-#define VERSION "0.0"
-#endif
 #ifndef SHAREDIR
 #define SHAREDIR "/usr/local/share/phyllo-export"
 #endif
-
-const struct writer writers[] = {
-	{ "pov", NULL, "pov.tmpl", pov_vars, pov_check,
-	  "a POV-Ray include file declaring the structure" },
-	{ "blender", NULL, "blender.tmpl", blender_vars, blender_check,
-	  "a Python script that builds the structure in Blender" },
-	{ "csv", csv_write, NULL, NULL, NULL,
-	  "one line per organ: position, frame, scale" },
-	{ "svg", svg_write, NULL, NULL, NULL,
-	  "a picture: a circle per organ, from above or unrolled" },
-	{ "info", info_write, NULL, NULL, NULL,
-	  "key: value facts about the result" },
-	{ NULL, NULL, NULL, NULL, NULL, NULL }
-};
-
-static model_fn *const models[MODEL__MAX] = {
-	[MODEL_PLANAR] = planar_run,
-	[MODEL_CYLINDRICAL] = cylindrical_run,
-	[MODEL_COLLISION] = collision_run,
-};
 
 /*
  * A long placement (the collision model) reports on a terminal, once
@@ -119,15 +98,36 @@ help(void)
 	    "instead of instances\n"
 	    "  -h, --help     show this help\n"
 	    "  -V, --version  show the version\n\n"
-	    "Models: planar, cylindrical.  See phyllo-export(1) and phyllo-export(5).");
+	    "Models (model = \"NAME\"; in the scene file):");
+	for (const struct model *const *m = models; *m != NULL; m++)
+		printf("  %-12s %s\n", (*m)->name, (*m)->help);
+	puts("\nSee phyllo-export(1) and phyllo-export(5).");
+}
+
+enum { WITH_ARRAYS, WITH_OBJECTS };
+
+/* "--pov" or "--pov or --blender": the formats an option goes with. */
+static const char *
+writers_with(int which)
+{
+	static char buf[128];
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (const struct writer *w = writers; w->name != NULL; w++)
+		if (which == WITH_ARRAYS ? w->arrays_tmpl != NULL :
+		    (w->opts & TO_OBJECTS) != 0)
+			len += (size_t)snprintf(buf + len, sizeof(buf) - len,
+			    "%s--%s", len ? " or " : "", w->name);
+	return buf;
 }
 
 /* 0 to go on, -1 to exit 0 at once (--help), or a status to exit with. */
+enum { OPT_WRITER = 256, NOPTIONS = 6 };
+
 static int
-parse_args(int argc, char *argv[], struct args *a)
+parse(int argc, char *argv[], struct args *a, struct option *longopts)
 {
-	enum { OPT_WRITER = 256 };
-	static struct option longopts[16];
 	int n = 0, c, idx;
 
 	for (const struct writer *w = writers; w->name != NULL; w++, n++)
@@ -199,13 +199,14 @@ parse_args(int argc, char *argv[], struct args *a)
 		    "goes with --pov and --blender", a->writer->name);
 		return ST_USAGE;
 	}
-	if (a->arrays && a->writer->vars != pov_vars) {
-		diag(ST_USAGE, NULL, 0, 0, "--arrays goes with --pov");
+	if (a->arrays && a->writer->arrays_tmpl == NULL) {
+		diag(ST_USAGE, NULL, 0, 0, "--arrays goes with %s",
+		    writers_with(WITH_ARRAYS));
 		return ST_USAGE;
 	}
-	if (a->objects && a->writer->vars != blender_vars) {
-		diag(ST_USAGE, NULL, 0, 0, "--blender-objects goes with "
-		    "--blender");
+	if (a->objects && !(a->writer->opts & TO_OBJECTS)) {
+		diag(ST_USAGE, NULL, 0, 0, "--blender-objects goes with %s",
+		    writers_with(WITH_OBJECTS));
 		return ST_USAGE;
 	}
 	if (a->template != NULL && a->arrays) {
@@ -217,11 +218,27 @@ parse_args(int argc, char *argv[], struct args *a)
 	return 0;
 }
 
+static int
+parse_args(int argc, char *argv[], struct args *a)
+{
+	struct option *longopts;
+	size_t nwriters = 0;
+	int rc;
+
+	while (writers[nwriters].name != NULL)
+		nwriters++;
+	/* Sized from the table, so a new format cannot overrun it. */
+	longopts = xcalloc(nwriters + NOPTIONS + 1, sizeof(*longopts));
+	rc = parse(argc, argv, a, longopts);
+	free(longopts);
+	return rc;
+}
+
 /* The format's template: --template FILE, installed, or built in. */
 static struct tmpl *
 load_template(const struct args *a)
 {
-	const char *name = a->arrays ? "pov-arrays.tmpl" : a->writer->tmpl;
+	const char *name = a->arrays ? a->writer->arrays_tmpl : a->writer->tmpl;
 	char path[4096];
 
 	if (a->template != NULL)
@@ -235,7 +252,7 @@ load_template(const struct args *a)
 /* Write the result; on any failure -o's target is left as it was. */
 static void
 write_result(const struct args *a, const struct tmpl *t,
-    const struct scene *sc, const struct result *res)
+    const struct result *res)
 {
 	struct sink s;
 	FILE *fp = output_open(a->output);
@@ -244,9 +261,9 @@ write_result(const struct args *a, const struct tmpl *t,
 		return;
 	sink_init(&s, fp);
 	if (t != NULL)
-		tmpl_write(t, &s, sc, res, a->objects ? TO_OBJECTS : 0);
+		tmpl_write(t, &s, res, a->objects ? TO_OBJECTS : 0);
 	else
-		a->writer->write(&s, sc, res);
+		a->writer->write(&s, res);
 	if (sink_finish(&s) != 0) {
 		diag(ST_SYSTEM, a->output ? a->output : "<stdout>", 0, 0,
 		    "%s", strerror(errno));
@@ -267,14 +284,7 @@ prepare(const struct args *a, struct scene *sc, struct tmpl **t,
 		return -1;
 	if (a->writer->tmpl != NULL && (*t = load_template(a)) == NULL)
 		return -1;
-	if (models[sc->model] == NULL) {
-		scene_error(sc, "model", "model \"%s\" is not implemented yet",
-		    scene_model_name(sc->model));
-		return -1;
-	}
-	if (models[sc->model](sc, res) != 0)
-		return -1;
-	return organs_apply(sc, res);
+	return model_run(sc, res);
 }
 
 int
@@ -300,7 +310,7 @@ main(int argc, char *argv[])
 		model_progress = progress;
 	}
 	if (prepare(&a, &sc, &t, &res) == 0)
-		write_result(&a, t, &sc, &res);
+		write_result(&a, t, &res);
 	tmpl_free(t);
 	result_free(&res);
 	scene_free(&sc);

@@ -5,12 +5,35 @@
 #include "organ.h"
 #include "scene.h"
 
-/* 0 on success; -1 after a diagnostic, leaving res empty. */
-typedef int model_fn(const struct scene *, struct result *res);
+/*
+ * A model: its name in the scene file, its group of settings (a table
+ * over its own parameter struct, which the loader allocates, fills with
+ * defaults and frees), and the function that places the organs.  Adding
+ * a model is its file, defining one of these, and a line in models.c.
+ */
+struct receptacle;
 
-model_fn planar_run;
-model_fn cylindrical_run;
-model_fn collision_run;
+struct model {
+	const char	*name;
+	const char	*help;		/* a line for --help */
+	const struct table *settings;	/* its group, name = { ... } */
+	size_t		 size;		/* of its parameter struct */
+	/* 0 on success; -1 after a diagnostic, leaving res empty. */
+	int		(*run)(const struct scene *, const void *params,
+			    struct result *);
+	enum projection	 svg;
+};
+
+/* Every model, NULL-terminated (models.c). */
+extern const struct model *const models[];
+
+const struct model *model_find(const char *name);
+
+/*
+ * Run the scene's model and apply its organs entries, leaving a result
+ * that carries everything writers need; 0, or -1 after a diagnostic.
+ */
+int	model_run(const struct scene *, struct result *);
 
 /* The collision model, placing as the tests and benchmarks choose. */
 enum place {
@@ -19,6 +42,8 @@ enum place {
 	PLACE_BRUTE	/* every earlier primordium at finely spaced t */
 };
 int	collision_place(const struct scene *, struct result *, int how);
+/* The receptacle a collision scene gave, for the tests. */
+const struct receptacle *collision_receptacle(const struct scene *);
 
 /*
  * Called now and then by a long-running model with the count placed so

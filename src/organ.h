@@ -4,6 +4,7 @@
 
 #include <stddef.h>
 
+#include "phyllo.h"
 #include "vec.h"
 
 /*
@@ -34,11 +35,26 @@ struct info_item {
 
 #define INFO_MAX 16
 
+/* How the SVG preview shows a structure. */
+enum projection {
+	PROJ_TOP,	/* from above, +Y up the page */
+	PROJ_UNROLL	/* unrolled: angle times radius across, height up */
+};
+
+/*
+ * What a model made, with everything a writer needs to know of the
+ * scene it came from, so that writers take the result alone.
+ */
 struct result {
 	struct organ	*organs;	/* owned */
 	size_t		 count;
 	double		 divergence;	/* as used, degrees */
-	const char	*const *objects; /* borrowed from the scene */
+	char		 name[NAME_LEN + 1];	/* the scene's name */
+	const char	*model;		/* the model's name (static) */
+	long long	 seed;
+	enum projection	 svg;		/* the model's preferred view */
+	char		*source;	/* the scene file as named, owned */
+	char		(*objects)[NAME_LEN + 1];	/* owned */
 	size_t		 nobjects;
 	struct info_item info[INFO_MAX];
 	int		 ninfo;

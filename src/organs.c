@@ -45,7 +45,7 @@ spans_resolve(const struct scene *sc, long long N, size_t *nspans)
 		long long to = rg->to < 0 ? N - 1 : rg->to;
 
 		if (rg->to >= 0 && rg->from > rg->to) {
-			diag(ST_SCENE, sc->file, rg->line, 0, "organs entry "
+			diag(ST_SCENE, sc->file, rg->at.line, 0, "organs entry "
 			    "runs backwards: from %lld is after to %lld",
 			    rg->from, rg->to);
 			free(sp);
@@ -61,14 +61,14 @@ spans_resolve(const struct scene *sc, long long N, size_t *nspans)
 		long long prev = i > 0 ? sp[i - 1].to : -1;
 
 		if (i < n && i > 0 && next <= prev) {
-			diag(ST_SCENE, sc->file, sp[i].rg->line, 0, "organs "
+			diag(ST_SCENE, sc->file, sp[i].rg->at.line, 0, "organs "
 			    "entry overlaps the entry at line %d from organ "
-			    "%lld", sp[i - 1].rg->line, next);
+			    "%lld", sp[i - 1].rg->at.line, next);
 			free(sp);
 			return NULL;
 		}
 		if (next > prev + 1 && n == 0) {
-			diag(ST_SCENE, sc->file, sc->ranges[0].line, 0,
+			diag(ST_SCENE, sc->file, sc->ranges[0].at.line, 0,
 			    "organs 0 to %lld are in no organs entry: every "
 			    "entry starts after the last organ", N - 1);
 			free(sp);
@@ -78,7 +78,7 @@ spans_resolve(const struct scene *sc, long long N, size_t *nspans)
 			const struct organ_range *at = i < n ? sp[i].rg :
 			    sp[i - 1].rg;
 
-			diag(ST_SCENE, sc->file, at->line, 0, "organs %lld to "
+			diag(ST_SCENE, sc->file, at->at.line, 0, "organs %lld to "
 			    "%lld are in no organs entry (%s this one)",
 			    prev + 1, next - 1, i < n ? "before" : "after");
 			free(sp);
@@ -97,7 +97,7 @@ weights_check(const struct scene *sc, const struct organ_range *rg)
 	if (rg->weights == NULL)
 		return 0;
 	if (rg->nweights != rg->nnames) {
-		diag(ST_SCENE, sc->file, rg->weights_line, 0, "organs.weights "
+		diag(ST_SCENE, sc->file, rg->given[RG_WEIGHTS], 0, "organs.weights "
 		    "has %zu numbers for %zu objects", rg->nweights,
 		    rg->nnames);
 		return -1;
@@ -105,7 +105,7 @@ weights_check(const struct scene *sc, const struct organ_range *rg)
 	for (size_t i = 0; i < rg->nweights; i++)
 		total += rg->weights[i];
 	if (!(total > 0)) {
-		diag(ST_SCENE, sc->file, rg->weights_line, 0,
+		diag(ST_SCENE, sc->file, rg->given[RG_WEIGHTS], 0,
 		    "organs.weights are all zero");
 		return -1;
 	}

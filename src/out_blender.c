@@ -141,17 +141,3 @@ const struct tmpl_var blender_vars[] = {
 	{ NULL, 0, NULL }
 };
 
-/* Blender keeps 63 bytes of a name; ours are shorter.  No clashes. */
-int
-blender_check(const struct scene *sc)
-{
-	for (size_t i = 0; i < sc->nranges; i++)
-		for (size_t k = 0; k < sc->ranges[i].nnames; k++)
-			if (strcmp(sc->ranges[i].names[k], sc->name) == 0) {
-				diag(ST_SCENE, sc->file, sc->ranges[i].line, 0,
-				    "organ object \"%s\" has the scene's name",
-				    sc->name);
-				return -1;
-			}
-	return 0;
-}

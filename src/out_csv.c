@@ -2,9 +2,8 @@
 #include "writer.h"
 
 void
-csv_write(struct sink *s, const struct scene *sc, const struct result *r)
+csv_write(struct sink *s, const struct result *r)
 {
-	(void)sc;
 	sink_puts(s, "n,object,x,y,z,ux,uy,uz,vx,vy,vz,wx,wy,wz,"
 	    "scale,radius\n");
 	for (size_t i = 0; i < r->count; i++) {

@@ -16,16 +16,16 @@ line(struct sink *s, const char *key, int n, const double *v)
 }
 
 void
-info_write(struct sink *s, const struct scene *sc, const struct result *r)
+info_write(struct sink *s, const struct result *r)
 {
 	double box[6] = { HUGE_VAL, HUGE_VAL, HUGE_VAL,
 	    -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
 	double count = (double)r->count;
 
 	sink_puts(s, "model: ");
-	sink_puts(s, scene_model_name(sc->model));
+	sink_puts(s, r->model);
 	sink_puts(s, "\nname: ");
-	sink_puts(s, sc->name);
+	sink_puts(s, r->name);
 	sink_putc(s, '\n');
 	line(s, "count", 1, &count);
 	line(s, "divergence", 1, &r->divergence);

@@ -63,14 +63,11 @@ put_v(struct sink *s, const struct tmpl_ctx *c)
 static void put_w(struct sink *s, const struct tmpl_ctx *c)
 { vec(s, tmpl_organ(c)->w, 1); }
 
-/*
- * A colour per organ object for the placeholders: hues a golden angle
- * apart, so any number of objects stay distinguishable.
- */
+/* The placeholders' colour of an organ object, its OBJECT_HUE. */
 static void
 put_colour(struct sink *s, const struct tmpl_ctx *c)
 {
-	double h = fmod(0.1 + 0.381966 * (double)c->object, 1.0) * 6;
+	double h = OBJECT_HUE(c->object) / 60;
 	double rgb[3], x = 1 - fabs(fmod(h, 2) - 1);
 	int k = (int)h;
 
@@ -96,25 +93,23 @@ const struct tmpl_var pov_vars[] = {
 	{ NULL, 0, NULL }
 };
 
-/* Names POV-Ray would read as its own words, or that clash. */
+/* Names POV-Ray would read as its own words. */
 int
 pov_check(const struct scene *sc)
 {
 	if (pov_reserved(sc->name)) {
-		scene_error(sc, "name", "name \"%s\" is a POV-Ray reserved "
-		    "word; capitalise it", sc->name);
+		scene_error(sc, sc->given[S_NAME], "name \"%s\" is a POV-Ray "
+		    "reserved word; capitalise it", sc->name);
 		return -1;
 	}
 	for (size_t i = 0; i < sc->nranges; i++)
 		for (size_t k = 0; k < sc->ranges[i].nnames; k++) {
 			const char *o = sc->ranges[i].names[k];
 
-			if (pov_reserved(o) || strcmp(o, sc->name) == 0) {
-				diag(ST_SCENE, sc->file, sc->ranges[i].line, 0,
-				    "organ object \"%s\" %s", o,
-				    strcmp(o, sc->name) == 0 ? "has the "
-				    "scene's name" : "is a POV-Ray reserved "
-				    "word; capitalise it");
+			if (pov_reserved(o)) {
+				diag(ST_SCENE, sc->file, sc->ranges[i].at.line,
+				    0, "organ object \"%s\" is a POV-Ray "
+				    "reserved word; capitalise it", o);
 				return -1;
 			}
 		}

@@ -11,9 +11,9 @@
 
 /* Where organ o goes on the page, before the y flip. */
 static void
-project(const struct scene *sc, const struct organ *o, double p[2])
+project(const struct result *r, const struct organ *o, double p[2])
 {
-	if (sc->model == MODEL_CYLINDRICAL) {
+	if (r->svg == PROJ_UNROLL) {
 		p[0] = hypot(o->pos[0], o->pos[1]) * o->phi * (M_PI / 180);
 		p[1] = o->pos[2];
 	} else {
@@ -23,13 +23,13 @@ project(const struct scene *sc, const struct organ *o, double p[2])
 }
 
 void
-svg_write(struct sink *s, const struct scene *sc, const struct result *r)
+svg_write(struct sink *s, const struct result *r)
 {
 	double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
 	double p[2], pad, w, h;
 
 	for (size_t i = 0; i < r->count; i++) {
-		project(sc, &r->organs[i], p);
+		project(r, &r->organs[i], p);
 		for (int k = 0; k < 2; k++) {
 			lo[k] = fmin(lo[k], p[k] - r->organs[i].radius);
 			hi[k] = fmax(hi[k], p[k] + r->organs[i].radius);
@@ -51,7 +51,7 @@ svg_write(struct sink *s, const struct scene *sc, const struct result *r)
 	sink_num(s, round(800 * (h + 2 * pad) / (w + 2 * pad)));
 	sink_puts(s, "\">\n<title>");
 	/* Identifiers: nothing to escape. */
-	sink_puts(s, sc->name);
+	sink_puts(s, r->name);
 	sink_puts(s, "</title>\n<rect x=\"");
 	sink_num(s, lo[0] - pad);
 	sink_puts(s, "\" y=\"");
@@ -60,17 +60,15 @@ svg_write(struct sink *s, const struct scene *sc, const struct result *r)
 	for (size_t i = 0; i < r->count; i++) {
 		const struct organ *o = &r->organs[i];
 
-		project(sc, o, p);
+		project(r, o, p);
 		sink_puts(s, "<circle cx=\"");
 		sink_num(s, p[0]);
 		sink_puts(s, "\" cy=\"");
 		sink_num(s, -p[1]);
 		sink_puts(s, "\" r=\"");
 		sink_num(s, o->radius);
-		/* Hues a golden angle apart, one per organ object. */
 		sink_puts(s, "\" fill=\"hsl(");
-		sink_uint(s, (unsigned long long)(40 + 137.508 * o->object) %
-		    360);
+		sink_uint(s, (unsigned long long)OBJECT_HUE(o->object));
 		sink_puts(s, ",70%,45%)\"/>\n");
 	}
 	sink_puts(s, "</svg>\n");

@@ -5,8 +5,44 @@
  * with the same area per organ, which is pi*c^2 for Vogel's formula.
  */
 #include <math.h>
+#include <stddef.h>
 
 #include "model.h"
+
+enum { PL_SCALE, PL_OUTER, PL_INNER, PL_EXPONENT, PL_DOME, PL__N };
+
+struct planar {
+	struct group_at	 at;
+	int		 given[PL__N];
+	double		 scale;		/* Vogel's c */
+	double		 outer;		/* fit c so the last organ sits here */
+	double		 inner;		/* radius of the first ring */
+	double		 exponent;	/* r = inner + c n^exponent */
+	double		 dome;		/* height of the centre above the rim */
+};
+
+#define P(f)	offsetof(struct planar, f)
+
+static const struct row planar_rows[] = {
+	[PL_SCALE] = { .name = "scale", .type = T_FLOAT, .off = P(scale),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .def = 1,
+	  .defstr = "1",
+	  .doc = "Vogel's c: organ n lies at radius c n^exponent" },
+	[PL_OUTER] = { .name = "outer", .type = T_FLOAT, .off = P(outer),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .doc = "radius of the last organ; sets c instead of scale" },
+	[PL_INNER] = { .name = "inner", .type = T_FLOAT, .off = P(inner),
+	  .lo = 0, .hi = HUGE_VAL, .defstr = "0",
+	  .doc = "radius at which organ 0 sits" },
+	[PL_EXPONENT] = { .name = "exponent", .type = T_FLOAT,
+	  .off = P(exponent), .lo = 0, .hi = 4, .flags = F_LO_OPEN,
+	  .def = 0.5, .defstr = "0.5", .doc = "exponent of n in the radius" },
+	[PL_DOME] = { .name = "dome", .type = T_FLOAT, .off = P(dome),
+	  .lo = -HUGE_VAL, .hi = HUGE_VAL, .defstr = "0",
+	  .doc = "height of the centre above the rim (paraboloid)" },
+};
+
+static const struct table planar_table = TABLE(planar_rows, struct planar);
 
 /* n^e; pow() is the model's costliest call, and e is mostly 1/2. */
 static double
@@ -16,37 +52,35 @@ power(double n, double e)
 }
 
 static int
-planar_check(const struct scene *sc)
+planar_check(const struct scene *sc, const struct planar *p)
 {
-	const struct planar_params *p = &sc->planar;
-
-	if (!scene_given(sc, "count")) {
-		scene_error(sc, "count", "missing setting 'count'");
+	if (!sc->given[S_COUNT]) {
+		scene_error(sc, 1, "missing setting 'count'");
 		return -1;
 	}
-	if (scene_given(sc, "planar.outer") && scene_given(sc, "planar.scale")) {
-		scene_error(sc, "planar.outer", "give planar.scale or "
+	if (p->given[PL_OUTER] && p->given[PL_SCALE]) {
+		scene_error(sc, p->given[PL_OUTER], "give planar.scale or "
 		    "planar.outer, not both");
 		return -1;
 	}
-	if (scene_given(sc, "planar.outer") && p->outer <= p->inner) {
-		scene_error(sc, "planar.outer", "planar.outer %.9g must be "
+	if (p->given[PL_OUTER] && p->outer <= p->inner) {
+		scene_error(sc, p->given[PL_OUTER], "planar.outer %.9g must be "
 		    "greater than planar.inner %.9g", p->outer, p->inner);
 		return -1;
 	}
 	return 0;
 }
 
-int
-planar_run(const struct scene *sc, struct result *res)
+static int
+planar_run(const struct scene *sc, const void *params, struct result *res)
 {
-	const struct planar_params *p = &sc->planar;
+	const struct planar *p = params;
 	size_t count = (size_t)sc->count;
 	double c = p->scale, rim, kdome;
 
-	if (planar_check(sc) < 0)
+	if (planar_check(sc, p) < 0)
 		return -1;
-	if (scene_given(sc, "planar.outer"))
+	if (p->given[PL_OUTER])
 		c = count > 1 ? (p->outer - p->inner) /
 		    pow((double)(count - 1), p->exponent) :
 		    p->outer - p->inner;
@@ -56,8 +90,6 @@ planar_run(const struct scene *sc, struct result *res)
 
 	result_init(res, count);
 	res->divergence = sc->divergence;
-	res->objects = sc->objects;
-	res->nobjects = sc->nobjects;
 	for (size_t n = 0; n < count; n++) {
 		struct organ *o = &res->organs[n];
 		double phi = angle_mod360((double)n, sc->divergence);
@@ -87,3 +119,13 @@ planar_run(const struct scene *sc, struct result *res)
 	}
 	return 0;
 }
+
+const struct model planar_model = {
+	.name = "planar",
+	.help = "Vogel: organ n at angle n a, radius c n^(1/2), on a disk or "
+	    "dome",
+	.settings = &planar_table,
+	.size = sizeof(struct planar),
+	.run = planar_run,
+	.svg = PROJ_TOP,
+};

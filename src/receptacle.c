@@ -1,12 +1,13 @@
 /*
- * receptacle.c - the collision model's receptacle as Bezier control
- * points: the scene's own profile, checked, or one of the presets.
+ * receptacle.c - a receptacle as Bezier control points: the scene's
+ * own profile, checked, or one of the presets.
  * Every preset stands on z = 0 with its base first: the rim of a disk,
  * cone or cap, the bottom of a cylinder, the lower pole of a sphere or
  * an ellipsoid.  Circular arcs are cubic Bezier arcs of at most 45
  * degrees, within 5e-6 of the circle's radius.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -14,8 +15,32 @@
 #include "receptacle.h"
 
 static const char *const shape_names[] = {
-	"disk", "cone", "hemisphere", "sphere", "cylinder", "ellipsoid", "cap"
+	[SHAPE_DISK] = "disk", [SHAPE_CONE] = "cone",
+	[SHAPE_HEMISPHERE] = "hemisphere", [SHAPE_SPHERE] = "sphere",
+	[SHAPE_CYLINDER] = "cylinder", [SHAPE_ELLIPSOID] = "ellipsoid",
+	[SHAPE_CAP] = "cap", NULL
 };
+
+#define RC(f)	offsetof(struct receptacle, f)
+
+static const struct row receptacle_rows[] = {
+	[RC_PROFILE] = { .name = "profile", .type = T_POINTS,
+	  .off = RC(profile), .lo = 0, .hi = HUGE_VAL, .defstr = "none",
+	  .doc = "3k+1 (radius, height) control points of k cubic Bezier "
+	  "segments, base first" },
+	[RC_SHAPE] = { .name = "shape", .type = T_CHOICE, .off = RC(shape),
+	  .defstr = "none", .words = shape_names,
+	  .doc = "a preset receptacle instead of a profile" },
+	[RC_RADIUS] = { .name = "radius", .type = T_FLOAT, .off = RC(radius),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .def = 1,
+	  .defstr = "1", .doc = "radius of the preset at its widest" },
+	[RC_HEIGHT] = { .name = "height", .type = T_FLOAT, .off = RC(height),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "per shape",
+	  .doc = "height of the cone, cylinder, ellipsoid or cap" },
+};
+
+const struct table receptacle_table = TABLE(receptacle_rows,
+    struct receptacle);
 
 /* A straight segment as one Bezier segment, thirds between. */
 static double (*line(double x0, double z0, double x1, double z1, int *n))[2]
@@ -104,21 +129,20 @@ default_height(int shape, double R)
 	}
 }
 
-static double (*preset(const struct scene *sc, int *n))[2]
+static double (*preset(const struct scene *sc, const struct receptacle *rc,
+    int *n))[2]
 {
-	double R = sc->coll.width, H;
-	int shape = sc->coll.shape;
+	double R = rc->radius, H;
+	int shape = rc->shape;
 
-	if (scene_given(sc, "collision.receptacle.height") &&
-	    (shape == SHAPE_DISK || shape == SHAPE_HEMISPHERE ||
-	    shape == SHAPE_SPHERE)) {
-		scene_error(sc, "collision.receptacle.height", "shape \"%s\" "
-		    "has no height of its own; give only its radius",
+	if (rc->given[RC_HEIGHT] && (shape == SHAPE_DISK ||
+	    shape == SHAPE_HEMISPHERE || shape == SHAPE_SPHERE)) {
+		scene_error(sc, rc->given[RC_HEIGHT], "shape \"%s\" has no "
+		    "height of its own; give only its radius",
 		    shape_names[shape]);
 		return NULL;
 	}
-	H = scene_given(sc, "collision.receptacle.height") ?
-	    sc->coll.height : default_height(shape, R);
+	H = rc->given[RC_HEIGHT] ? rc->height : default_height(shape, R);
 	switch (shape) {
 	case SHAPE_DISK:
 		return line(R, 0, 0, 0, n);
@@ -138,35 +162,33 @@ static double (*preset(const struct scene *sc, int *n))[2]
 	return NULL;
 }
 
-double (*receptacle_points(const struct scene *sc, int *n))[2]
+double (*receptacle_points(const struct scene *sc,
+    const struct receptacle *rc, int *n))[2]
 {
-	const struct point_list *pl = &sc->coll.profile;
-	int have_profile = scene_given(sc, "collision.receptacle.profile") != 0;
-	int have_shape = scene_given(sc, "collision.receptacle.shape") != 0;
+	const struct point_list *pl = &rc->profile;
+	const char *at = rc->at.path;
+	int have_profile = rc->given[RC_PROFILE] != 0;
+	int have_shape = rc->given[RC_SHAPE] != 0;
 	double (*p)[2];
 
 	if (have_profile == have_shape) {
-		scene_error(sc, have_profile ? "collision.receptacle.shape" :
-		    "collision.receptacle", "give collision.receptacle.profile "
-		    "or collision.receptacle.shape, %s", have_profile ?
-		    "not both" : "one of them");
+		scene_error(sc, have_profile ? rc->given[RC_SHAPE] :
+		    GIVEN_AT(rc, RC_SHAPE), "give %s.profile or %s.shape, %s",
+		    at, at, have_profile ? "not both" : "one of them");
 		return NULL;
 	}
 	if (have_shape)
-		return preset(sc, n);
-	if (scene_given(sc, "collision.receptacle.radius") ||
-	    scene_given(sc, "collision.receptacle.height")) {
-		scene_error(sc, scene_given(sc, "collision.receptacle.radius") ?
-		    "collision.receptacle.radius" :
-		    "collision.receptacle.height", "collision.receptacle.radius "
-		    "and height size a preset shape; a profile has its own "
-		    "coordinates");
+		return preset(sc, rc, n);
+	if (rc->given[RC_RADIUS] || rc->given[RC_HEIGHT]) {
+		scene_error(sc, rc->given[RC_RADIUS] ? rc->given[RC_RADIUS] :
+		    rc->given[RC_HEIGHT], "%s.radius and height size a preset "
+		    "shape; a profile has its own coordinates", at);
 		return NULL;
 	}
 	if (pl->n < 4 || (pl->n - 1) % 3 != 0) {
-		scene_error(sc, "collision.receptacle.profile", "the profile "
-		    "has %d point%s; cubic Bezier segments joined end to end "
-		    "take 3k+1 (4, 7, 10, ...)", pl->n, pl->n == 1 ? "" : "s");
+		scene_error(sc, rc->given[RC_PROFILE], "the profile has %d "
+		    "point%s; cubic Bezier segments joined end to end take "
+		    "3k+1 (4, 7, 10, ...)", pl->n, pl->n == 1 ? "" : "s");
 		return NULL;
 	}
 	p = xcalloc((size_t)pl->n, sizeof(*p));

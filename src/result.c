@@ -17,8 +17,9 @@ void
 result_free(struct result *r)
 {
 	free(r->organs);
-	r->organs = NULL;
-	r->count = 0;
+	free(r->source);
+	free(r->objects);
+	*r = (struct result){0};
 }
 
 /* Record a fact for --info; facts past INFO_MAX are a programming error. */

@@ -1,7 +1,8 @@
 /*
  * scene.c - load a scene file with libconfig and check every setting
- * against the table in settings.c: types, ranges, the models each
- * applies to, identifiers, expressions.  The first error ends the load.
+ * against its table (settings.h): types, ranges, identifiers,
+ * expressions; the scene's model's group against the model's own table.
+ * The first error ends the load.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -16,6 +17,7 @@
 #include "cfgtext.h"
 #include "diag.h"
 #include "mem.h"
+#include "model.h"
 #include "scene.h"
 #include "settings.h"
 
@@ -127,7 +129,7 @@ in_range(const struct row *r, double v)
 
 static int
 set_number(struct load *L, const config_setting_t *s, const struct row *r,
-    void *dst)
+    const char *path, void *dst)
 {
 	char range[128];
 	int type = config_setting_type(s);
@@ -135,7 +137,7 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 
 	if (type != CONFIG_TYPE_INT && type != CONFIG_TYPE_INT64 &&
 	    type != CONFIG_TYPE_FLOAT) {
-		err_at(L, s, "%s must be %s", r->path,
+		err_at(L, s, "%s must be %s", path,
 		    r->type == T_INT || r->type == T_INTS ? "an integer" :
 		    "a number");
 		return -1;
@@ -145,7 +147,7 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 		v = config_setting_get_float(s);
 		if (v != floor(v) || fabs(v) > 9007199254740992.0) {
 			err_at(L, s, "%s must be an integer, not %.15g",
-			    r->path, v);
+			    path, v);
 			return -1;
 		}
 	} else if (type == CONFIG_TYPE_FLOAT)
@@ -156,10 +158,10 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 	if (!isfinite(v) || !in_range(r, v)) {
 		range_words(r, range, sizeof(range));
 		if (type == CONFIG_TYPE_FLOAT)
-			err_at(L, s, "%s %.15g is out of range: %s", r->path,
+			err_at(L, s, "%s %.15g is out of range: %s", path,
 			    v, range);
 		else
-			err_at(L, s, "%s %lld is out of range: %s", r->path,
+			err_at(L, s, "%s %lld is out of range: %s", path,
 			    config_setting_get_int64(s), range);
 		return -1;
 	}
@@ -171,49 +173,77 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 	return 0;
 }
 
-static int
-set_choice(struct load *L, const config_setting_t *s, const struct row *r,
-    int *dst)
+/* "disk cone hemisphere ...": a word list for messages. */
+static void
+words_join(char *buf, size_t sz, const char *const *words)
 {
-	const char *v = config_setting_get_string(s), *w = r->words;
-	char q[64];
-	size_t len;
-	int i;
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (; *words != NULL && len < sz; words++)
+		len += (size_t)snprintf(buf + len, sz - len, "%s%s",
+		    len ? " " : "", *words);
+}
+
+static int
+set_choice(struct load *L, const config_setting_t *s, const char *path,
+    const char *const *words, int *dst)
+{
+	const char *v = config_setting_get_string(s);
+	char q[64], list[256];
 
 	if (v == NULL) {
-		err_at(L, s, "%s must be a string", r->path);
+		err_at(L, s, "%s must be a string", path);
 		return -1;
 	}
-	for (i = 0; *w != '\0'; i++, w += len + (w[len] == ' ')) {
-		len = strcspn(w, " ");
-		if (strlen(v) == len && strncmp(v, w, len) == 0) {
+	for (int i = 0; words[i] != NULL; i++)
+		if (strcmp(v, words[i]) == 0) {
 			*dst = i;
 			return 0;
 		}
-	}
 	cfgtext_quote(q, sizeof(q), v);
-	err_at(L, s, "%s \"%s\" is not one of: %s", r->path, q, r->words);
+	words_join(list, sizeof(list), words);
+	err_at(L, s, "%s \"%s\" is not one of: %s", path, q, list);
 	return -1;
+}
+
+/* [x, y, z]: three finite numbers in the row's range. */
+static int
+set_vec3(struct load *L, const config_setting_t *s, const struct row *r,
+    const char *path, double *dst)
+{
+	if ((config_setting_type(s) != CONFIG_TYPE_ARRAY &&
+	    config_setting_type(s) != CONFIG_TYPE_LIST) ||
+	    config_setting_length(s) != 3) {
+		err_at(L, s, "%s must be an array of 3 numbers: [1, 1, 0.5]",
+		    path);
+		return -1;
+	}
+	for (int i = 0; i < 3; i++)
+		if (set_number(L, config_setting_get_elem(s, (unsigned)i), r,
+		    path, &dst[i]) < 0)
+			return -1;
+	return 0;
 }
 
 /* [m, n] or [m, n, k]: positive integers, stored with their count. */
 static int
 set_ints(struct load *L, const config_setting_t *s, const struct row *r,
-    struct int_list *dst)
+    const char *path, struct int_list *dst)
 {
 	int n = config_setting_length(s);
 
 	if ((config_setting_type(s) != CONFIG_TYPE_ARRAY &&
 	    config_setting_type(s) != CONFIG_TYPE_LIST) || n < 2 || n > 3) {
 		err_at(L, s, "%s must be an array of 2 or 3 integers: "
-		    "[8, 13] or [8, 13, 21]", r->path);
+		    "[8, 13] or [8, 13, 21]", path);
 		return -1;
 	}
 	for (int i = 0; i < n; i++) {
 		long long v;
 
 		if (set_number(L, config_setting_get_elem(s, (unsigned)i),
-		    r, &v) < 0)
+		    r, path, &v) < 0)
 			return -1;
 		dst->v[i] = (int)v;
 	}
@@ -221,9 +251,9 @@ set_ints(struct load *L, const config_setting_t *s, const struct row *r,
 	return 0;
 }
 
-/* ((x0, y0), (x1, y1), ...): finite numbers in the row's range. */
+/* ((x0, y0), (x1, y1), ...): finite numbers, x at least 0. */
 static int
-set_points(struct load *L, const config_setting_t *s, const struct row *r,
+set_points(struct load *L, const config_setting_t *s, const char *path,
     struct point_list *dst)
 {
 	int n = config_setting_length(s);
@@ -231,11 +261,11 @@ set_points(struct load *L, const config_setting_t *s, const struct row *r,
 	if (config_setting_type(s) != CONFIG_TYPE_LIST &&
 	    config_setting_type(s) != CONFIG_TYPE_ARRAY) {
 		err_at(L, s, "%s must be a list of points: ((1, 0), (0.7, 0.2), "
-		    "(0.3, 0.4), (0, 0.5))", r->path);
+		    "(0.3, 0.4), (0, 0.5))", path);
 		return -1;
 	}
 	if (n > PROFILE_POINTS_MAX) {
-		err_at(L, s, "%s has %d points, more than %d", r->path, n,
+		err_at(L, s, "%s has %d points, more than %d", path, n,
 		    PROFILE_POINTS_MAX);
 		return -1;
 	}
@@ -249,7 +279,7 @@ set_points(struct load *L, const config_setting_t *s, const struct row *r,
 		    config_setting_type(e) != CONFIG_TYPE_ARRAY) ||
 		    config_setting_length(e) != 2) {
 			err_at(L, e, "%s: point %d must be a pair (radius, "
-			    "height)", r->path, i + 1);
+			    "height)", path, i + 1);
 			return -1;
 		}
 		for (int k = 0; k < 2; k++) {
@@ -259,7 +289,7 @@ set_points(struct load *L, const config_setting_t *s, const struct row *r,
 
 			if (!config_setting_is_number(x)) {
 				err_at(L, x, "%s: point %d must be two numbers "
-				    "(radius, height)", r->path, i + 1);
+				    "(radius, height)", path, i + 1);
 				return -1;
 			}
 			v = config_setting_type(x) == CONFIG_TYPE_FLOAT ?
@@ -267,7 +297,7 @@ set_points(struct load *L, const config_setting_t *s, const struct row *r,
 			    (double)config_setting_get_int64(x);
 			if (!isfinite(v) || (k == 0 && v < 0)) {
 				err_at(L, x, "%s: point %d has %s %.15g; it must "
-				    "be %s", r->path, i + 1, k ? "height" :
+				    "be %s", path, i + 1, k ? "height" :
 				    "radius", v, k ? "finite" :
 				    "finite and at least 0");
 				return -1;
@@ -281,7 +311,7 @@ set_points(struct load *L, const config_setting_t *s, const struct row *r,
 /* A number, or a string holding an expression, compiled now. */
 static int
 set_expr(struct load *L, const config_setting_t *s, const struct row *r,
-    struct expr_setting *dst)
+    const char *path, struct expr_setting *dst)
 {
 	struct expr_error err;
 	const char *src;
@@ -297,12 +327,12 @@ set_expr(struct load *L, const config_setting_t *s, const struct row *r,
 	}
 	if ((src = config_setting_get_string(s)) == NULL) {
 		err_at(L, s, "%s must be a number or an expression string",
-		    r->path);
+		    path);
 		return -1;
 	}
 	if ((dst->e = expr_compile(src, r->vars, &err)) == NULL) {
 		diag(ST_SCENE, file_of(L, s), line_of(s), err.col, "%s: %s",
-		    r->path, err.msg);
+		    path, err.msg);
 		return -1;
 	}
 	return 0;
@@ -310,7 +340,7 @@ set_expr(struct load *L, const config_setting_t *s, const struct row *r,
 
 /* One identifier, or an array of them: the entry's object variants. */
 static int
-set_names(struct load *L, const config_setting_t *s, const struct row *r,
+set_names(struct load *L, const config_setting_t *s, const char *path,
     struct organ_range *rg)
 {
 	int list = config_setting_type(s) == CONFIG_TYPE_ARRAY ||
@@ -319,11 +349,11 @@ set_names(struct load *L, const config_setting_t *s, const struct row *r,
 
 	if (!list && config_setting_type(s) != CONFIG_TYPE_STRING) {
 		err_at(L, s, "%s must be a name or an array of names",
-		    r->path);
+		    path);
 		return -1;
 	}
 	if (n == 0 || n > VARIANTS_MAX) {
-		err_at(L, s, "%s must list 1 to %d names, not %d", r->path,
+		err_at(L, s, "%s must list 1 to %d names, not %d", path,
 		    VARIANTS_MAX, n);
 		return -1;
 	}
@@ -334,7 +364,7 @@ set_names(struct load *L, const config_setting_t *s, const struct row *r,
 		const config_setting_t *e = list ?
 		    config_setting_get_elem(s, (unsigned)i) : s;
 
-		if (set_ident(L, e, r->path, rg->names[i]) < 0)
+		if (set_ident(L, e, path, rg->names[i]) < 0)
 			return -1;
 	}
 	return 0;
@@ -342,47 +372,98 @@ set_names(struct load *L, const config_setting_t *s, const struct row *r,
 
 static int
 set_weights(struct load *L, const config_setting_t *s, const struct row *r,
-    struct organ_range *rg)
+    const char *path, struct organ_range *rg)
 {
 	int n = config_setting_length(s);
 
 	if (config_setting_type(s) != CONFIG_TYPE_ARRAY &&
 	    config_setting_type(s) != CONFIG_TYPE_LIST) {
 		err_at(L, s, "%s must be an array of numbers: [1, 2]",
-		    r->path);
+		    path);
 		return -1;
 	}
 	if (n > VARIANTS_MAX) {
-		err_at(L, s, "%s lists more than %d numbers", r->path,
+		err_at(L, s, "%s lists more than %d numbers", path,
 		    VARIANTS_MAX);
 		return -1;
 	}
 	rg->weights = xcalloc((size_t)n, sizeof(*rg->weights));
 	rg->nweights = (size_t)n;
-	rg->weights_line = line_of(s);
-	for (int i = 0; i < n; i++)
+		for (int i = 0; i < n; i++)
 		if (set_number(L, config_setting_get_elem(s, (unsigned)i), r,
-		    &rg->weights[i]) < 0)
+		    path, &rg->weights[i]) < 0)
 			return -1;
 	return 0;
 }
 
 static int	load_group(struct load *, const config_setting_t *,
-		    const char *prefix, void *base, enum where);
+		    const char *path, const struct table *, void *base);
+
+static struct group_at *
+at_of(const struct table *tab, void *base)
+{
+	return (struct group_at *)((char *)base + tab->at);
+}
+
+static int *
+given_of(const struct table *tab, void *base)
+{
+	return (int *)((char *)base + tab->given);
+}
+
+/* Numbers and choices take their defaults, in nested groups too. */
+static void
+set_defaults(const struct table *tab, void *base)
+{
+	for (size_t i = 0; i < tab->n; i++) {
+		const struct row *r = &tab->rows[i];
+		char *dst = (char *)base + r->off;
+
+		if (r->type == T_INT)
+			*(long long *)dst = (long long)r->def;
+		else if (r->type == T_FLOAT)
+			*(double *)dst = r->def;
+		else if (r->type == T_CHOICE)
+			*(int *)dst = (int)r->def;
+		else if (r->type == T_VEC3)
+			for (int k = 0; k < 3; k++)
+				((double *)dst)[k] = r->def;
+		else if (r->type == T_GROUP)
+			set_defaults(r->sub, dst);
+	}
+}
+
+/* Free what the settings of a struct own, in nested groups too. */
+static void
+free_settings(const struct table *tab, void *base)
+{
+	for (size_t i = 0; i < tab->n; i++) {
+		const struct row *r = &tab->rows[i];
+		char *dst = (char *)base + r->off;
+
+		if (r->type == T_EXPR)
+			expr_free(((struct expr_setting *)dst)->e);
+		else if (r->type == T_POINTS)
+			free(((struct point_list *)dst)->p);
+		else if (r->type == T_GROUP)
+			free_settings(r->sub, dst);
+	}
+}
 
 static int
-load_ranges(struct load *L, const config_setting_t *s)
+load_ranges(struct load *L, const config_setting_t *s, const char *path,
+    const struct table *tab)
 {
 	struct scene *sc = L->sc;
 	int n = config_setting_length(s);
 
 	if (config_setting_type(s) != CONFIG_TYPE_LIST) {
-		err_at(L, s, "organs must be a list of groups: "
-		    "organs = ( { object = \"Seed\"; } );");
+		err_at(L, s, "%s must be a list of groups: "
+		    "%s = ( { object = \"Seed\"; } );", path, path);
 		return -1;
 	}
 	if (n > RANGES_MAX) {
-		err_at(L, s, "organs has more than %d entries", RANGES_MAX);
+		err_at(L, s, "%s has more than %d entries", path, RANGES_MAX);
 		return -1;
 	}
 	sc->ranges = xcalloc((size_t)n, sizeof(*sc->ranges));
@@ -391,14 +472,13 @@ load_ranges(struct load *L, const config_setting_t *s)
 		struct organ_range *rg = &sc->ranges[i];
 
 		if (!config_setting_is_group(e)) {
-			err_at(L, e, "organs entry %d must be a group "
-			    "{ object = \"Seed\"; ... }", i + 1);
+			err_at(L, e, "%s entry %d must be a group "
+			    "{ object = \"Seed\"; ... }", path, i + 1);
 			return -1;
 		}
-		rg->line = line_of(e);
-		rg->to = -1;
 		sc->nranges++;
-		if (load_group(L, e, "organs", rg, IN_RANGE) < 0)
+		set_defaults(tab, rg);
+		if (load_group(L, e, path, tab, rg) < 0)
 			return -1;
 		if (rg->names == NULL) {
 			rg->names = xcalloc(1, sizeof(*rg->names));
@@ -409,26 +489,29 @@ load_ranges(struct load *L, const config_setting_t *s)
 	return 0;
 }
 
+/* model = "...": one of the registry's names. */
+static int
+set_model(struct load *L, const config_setting_t *s, const char *path,
+    const struct model **dst)
+{
+	const char *words[16];
+	size_t n = 0;
+	int i;
+
+	for (const struct model *const *m = models; *m != NULL && n < 15; m++)
+		words[n++] = (*m)->name;
+	words[n] = NULL;
+	if (set_choice(L, s, path, words, &i) < 0)
+		return -1;
+	*dst = models[i];
+	return 0;
+}
+
 static int
 load_setting(struct load *L, const config_setting_t *s, const char *path,
-    void *base, enum where where)
+    const struct row *r, void *base)
 {
-	const struct row *r = row_find(path, where);
-	struct scene *sc = L->sc;
-	void *dst;
-
-	if (r == NULL) {
-		err_at(L, s, "unknown setting '%s'", path);
-		return -1;
-	}
-	if (r->models != 0 && !(r->models & (1u << sc->model))) {
-		err_at(L, s, "'%s' does not apply to model \"%s\"", path,
-		    scene_model_name(sc->model));
-		return -1;
-	}
-	if (where == IN_SCENE)
-		sc->given[r - rows] = line_of(s);
-	dst = (char *)base + r->off;
+	void *dst = (char *)base + r->off;
 
 	switch (r->type) {
 	case T_GROUP:
@@ -437,68 +520,87 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 			    path, path);
 			return -1;
 		}
-		return load_group(L, s, path, base, where);
+		return load_group(L, s, path, r->sub, dst);
 	case T_INT:
 	case T_FLOAT:
-		return set_number(L, s, r, dst);
+		return set_number(L, s, r, path, dst);
 	case T_IDENT:
 		return set_ident(L, s, path, dst);
 	case T_CHOICE:
-		return set_choice(L, s, r, dst);
+		return set_choice(L, s, path, r->words, dst);
 	case T_EXPR:
-		return set_expr(L, s, r, dst);
+		return set_expr(L, s, r, path, dst);
 	case T_NAMES:
-		return set_names(L, s, r, base);
+		return set_names(L, s, path, base);
 	case T_WEIGHTS:
-		return set_weights(L, s, r, base);
+		return set_weights(L, s, r, path, base);
 	case T_INTS:
-		return set_ints(L, s, r, dst);
+		return set_ints(L, s, r, path, dst);
 	case T_POINTS:
-		return set_points(L, s, r, dst);
+		return set_points(L, s, path, dst);
 	case T_RANGES:
-		return load_ranges(L, s);
+		return load_ranges(L, s, path, r->sub);
+	case T_MODEL:
+		return set_model(L, s, path, dst);
+	case T_VEC3:
+		return set_vec3(L, s, r, path, dst);
 	}
 	return -1;
 }
 
+/*
+ * The members of group g, the struct base described by tab, at path.
+ * At the top level, a model's name opens that model's group.
+ */
 static int
-load_group(struct load *L, const config_setting_t *g, const char *prefix,
-    void *base, enum where where)
+load_group(struct load *L, const config_setting_t *g, const char *path,
+    const struct table *tab, void *base)
 {
+	struct group_at *at = at_of(tab, base);
 	int n = config_setting_length(g);
 
+	at->line = line_of(g) > 0 ? line_of(g) : 1;
+	snprintf(at->path, sizeof(at->path), "%s", path);
 	for (int i = 0; i < n; i++) {
 		config_setting_t *s = config_setting_get_elem(g, (unsigned)i);
-		char path[128];
+		const char *name = config_setting_name(s);
+		const struct model *m;
+		char sub[PATH_LEN];
+		size_t k;
 
-		/* The model must be known before its settings are checked. */
-		if (where == IN_SCENE && *prefix == '\0' &&
-		    strcmp(config_setting_name(s), "model") == 0)
+		/* The model is known before its settings are checked. */
+		if (tab == &scene_table && strcmp(name, "model") == 0)
 			continue;
-		snprintf(path, sizeof(path), "%s%s%s", prefix,
-		    *prefix ? "." : "", config_setting_name(s));
-		if (load_setting(L, s, path, base, where) < 0)
+		snprintf(sub, sizeof(sub), "%s%s%s", path, *path ? "." : "",
+		    name);
+		for (k = 0; k < tab->n; k++)
+			if (strcmp(tab->rows[k].name, name) == 0)
+				break;
+		if (k < tab->n) {
+			given_of(tab, base)[k] = line_of(s);
+			if (load_setting(L, s, sub, &tab->rows[k], base) < 0)
+				return -1;
+			continue;
+		}
+		m = tab == &scene_table ? model_find(name) : NULL;
+		if (m == NULL) {
+			err_at(L, s, "unknown setting '%s'", sub);
+			return -1;
+		}
+		if (m != L->sc->model) {
+			err_at(L, s, "'%s' does not apply to model \"%s\"", sub,
+			    L->sc->model->name);
+			return -1;
+		}
+		if (!config_setting_is_group(s)) {
+			err_at(L, s, "%s must be a group: %s = { ... };",
+			    sub, sub);
+			return -1;
+		}
+		if (load_group(L, s, sub, m->settings, L->sc->params) < 0)
 			return -1;
 	}
 	return 0;
-}
-
-static void
-set_defaults(struct scene *sc)
-{
-	for (size_t i = 0; i < nrows; i++) {
-		const struct row *r = &rows[i];
-		char *dst = (char *)sc + r->off;
-
-		if (r->where != IN_SCENE)
-			continue;
-		if (r->type == T_INT)
-			*(long long *)dst = (long long)r->def;
-		else if (r->type == T_FLOAT)
-			*(double *)dst = r->def;
-		else if (r->type == T_CHOICE)
-			*(int *)dst = (int)r->def;
-	}
 }
 
 /*
@@ -530,11 +632,16 @@ name_from_file(char *dst, const char *file)
 	dst[len] = '\0';
 }
 
-/* Collect the distinct organ object names and number the variants. */
-static void
-collect_objects(struct scene *sc)
+/*
+ * Collect the distinct organ object names and number the variants.  An
+ * object may not carry the scene's name: both name things in one
+ * namespace of POV-Ray and of Blender.
+ */
+static int
+collect_objects(struct load *L)
 {
 	static const char *const fallback = "Organ";
+	struct scene *sc = L->sc;
 	size_t total = 0;
 
 	for (size_t i = 0; i < sc->nranges; i++)
@@ -547,6 +654,12 @@ collect_objects(struct scene *sc)
 		for (size_t k = 0; k < rg->nnames; k++) {
 			size_t j;
 
+			if (strcmp(rg->names[k], sc->name) == 0) {
+				diag(ST_SCENE, L->file, rg->at.line, 0, "organ "
+				    "object \"%s\" has the scene's name",
+				    sc->name);
+				return -1;
+			}
 			for (j = 0; j < sc->nobjects; j++)
 				if (strcmp(sc->objects[j], rg->names[k]) == 0)
 					break;
@@ -557,6 +670,7 @@ collect_objects(struct scene *sc)
 	}
 	if (sc->nobjects == 0)
 		sc->objects[sc->nobjects++] = fallback;
+	return 0;
 }
 
 static int
@@ -564,22 +678,35 @@ load_root(struct load *L, const config_setting_t *root)
 {
 	struct scene *sc = L->sc;
 	const config_setting_t *m = config_setting_get_member(root, "model");
-	const struct row *mr = row_find("model", IN_SCENE);
+	const struct model *model;
 
 	if (m == NULL) {
+		const char *words[16];
+		char list[256];
+		size_t n = 0;
+
+		for (const struct model *const *p = models; *p && n < 15; p++)
+			words[n++] = (*p)->name;
+		words[n] = NULL;
+		words_join(list, sizeof(list), words);
 		diag(ST_SCENE, L->file, 1, 0, "missing setting 'model' "
-		    "(one of: %s)", mr->words);
+		    "(one of: %s)", list);
 		return -1;
 	}
-	sc->given[mr - rows] = line_of(m);
-	if (set_choice(L, m, mr, &sc->model) < 0)
+	sc->given[S_MODEL] = line_of(m);
+	if (set_model(L, m, "model", &sc->model) < 0)
 		return -1;
-	if (load_group(L, root, "", sc, IN_SCENE) < 0)
+	model = sc->model;
+	sc->params = xcalloc(1, model->size);
+	set_defaults(model->settings, sc->params);
+	snprintf(at_of(model->settings, sc->params)->path, PATH_LEN, "%s",
+	    model->name);
+	if (load_group(L, root, "", &scene_table, sc) < 0)
 		return -1;
-	if (!sc->given[row_find("name", IN_SCENE) - rows])
+	sc->at.line = 1;
+	if (!sc->given[S_NAME])
 		name_from_file(sc->name, L->file);
-	collect_objects(sc);
-	return 0;
+	return collect_objects(L);
 }
 
 int
@@ -592,8 +719,7 @@ scene_load_buffer(struct scene *sc, const char *file, const char *text,
 	int rc = -1, nul_line;
 
 	*sc = (struct scene){ .file = file };
-	sc->given = xcalloc(nrows, sizeof(*sc->given));
-	set_defaults(sc);
+	set_defaults(&scene_table, sc);
 
 	if ((ready = cfgtext_prepare(text, len, &nul_line)) == NULL) {
 		diag(ST_SCENE, file, nul_line, 0, "NUL byte in scene file");
@@ -664,52 +790,26 @@ scene_free(struct scene *sc)
 	for (size_t i = 0; i < sc->nranges; i++) {
 		struct organ_range *rg = &sc->ranges[i];
 
+		free_settings(scene_table.rows[S_ORGANS].sub, rg);
 		free(rg->names);
 		free(rg->ids);
 		free(rg->weights);
-		expr_free(rg->scale.e);
-		expr_free(rg->altitude.e);
-		expr_free(rg->tilt.e);
-		expr_free(rg->roll.e);
 	}
 	free(sc->ranges);
-	expr_free(sc->cyl.radius.e);
-	expr_free(sc->coll.radius.e);
-	expr_free(sc->coll.epsilon.e);
-	free(sc->coll.profile.p);
+	if (sc->params != NULL)
+		free_settings(sc->model->settings, sc->params);
+	free(sc->params);
 	free(sc->objects);
-	free(sc->given);
 	*sc = (struct scene){0};
 }
 
-/* The line a setting was given on, or 0. */
-int
-scene_given(const struct scene *sc, const char *path)
-{
-	const struct row *r = row_find(path, IN_SCENE);
-
-	return r != NULL && sc->given != NULL ? sc->given[r - rows] : 0;
-}
-
-/*
- * An error found after loading (by a model's checks), at the line of
- * the setting named, else of its enclosing group, else line 1.
- */
+/* An error found after loading (by a model's checks), at line. */
 void
-scene_error(const struct scene *sc, const char *path, const char *fmt, ...)
+scene_error(const struct scene *sc, int line, const char *fmt, ...)
 {
-	char msg[512], key[128];
-	int line = 0;
+	char msg[512];
 	va_list ap;
 
-	snprintf(key, sizeof(key), "%s", path);
-	while ((line = scene_given(sc, key)) == 0) {
-		char *dot = strrchr(key, '.');
-
-		if (dot == NULL)
-			break;
-		*dot = '\0';
-	}
 	va_start(ap, fmt);
 	vsnprintf(msg, sizeof(msg), fmt, ap);
 	va_end(ap);

@@ -1,55 +1,77 @@
-/* settings.h - the table of scene settings, shared by the loader and its checks. */
+/*
+ * settings.h - how settings are described: each group of the scene
+ * file (the top level, a model's group, a receptacle, an organs entry)
+ * is one table of rows over one C struct.  The loader in scene.c walks
+ * the tables, so parsing, defaults, validation, freeing and the man
+ * page's list cannot drift apart.
+ */
 #ifndef SETTINGS_H
 #define SETTINGS_H
 
 #include <stddef.h>
-
-#include "scene.h"
+#include <stdio.h>
 
 enum type {
-	T_GROUP,	/* a group of further settings */
+	T_GROUP,	/* a group: the struct at off, described by sub */
 	T_INT,		/* long long */
 	T_FLOAT,	/* double; integers are accepted */
 	T_IDENT,	/* char[NAME_LEN + 1], [A-Za-z][A-Za-z0-9_]* */
-	T_CHOICE,	/* int: index into the row's word list */
+	T_CHOICE,	/* int: index into the row's words */
 	T_EXPR,		/* struct expr_setting: a number or an expression */
 	T_NAMES,	/* an identifier or an array of them (variants) */
 	T_WEIGHTS,	/* an array of numbers, one per variant */
-	T_INTS,		/* an array of 2 or 3 positive integers */
-	T_POINTS,	/* a list of (x, y) pairs of numbers */
-	T_RANGES	/* the organs list: struct organ_range entries */
-};
-
-enum where {
-	IN_SCENE,	/* offset into struct scene */
-	IN_RANGE	/* offset into struct organ_range */
+	T_INTS,		/* struct int_list: 2 or 3 positive integers */
+	T_POINTS,	/* struct point_list: (x, y) pairs of numbers */
+	T_RANGES,	/* the organs list: entries described by sub */
+	T_MODEL,	/* the model's name, from the registry (model.h) */
+	T_VEC3		/* double[3]: [x, y, z] */
 };
 
 #define F_LO_OPEN	0x01	/* lo itself is not allowed */
-#define F_REQUIRED	0x02	/* every scene must give it */
 
-#define PLANAR		(1u << MODEL_PLANAR)
-#define CYL		(1u << MODEL_CYLINDRICAL)
-#define COLL		(1u << MODEL_COLLISION)
+struct table;
 
 struct row {
-	const char	*path;	/* dotted, e.g. "planar.scale" */
+	const char	*name;	/* this part of the path: "scale" */
 	enum type	 type;
-	enum where	 where;
-	unsigned	 models;	/* models it applies to; 0: all */
-	size_t		 off;
+	size_t		 off;	/* into the struct its table describes */
+	const struct table *sub; /* T_GROUP, T_RANGES: their rows */
 	double		 lo, hi;	/* numbers: the allowed range */
 	unsigned	 flags;
 	double		 def;		/* numbers and choices: default */
 	const char	*defstr;	/* as the man page says it */
-	const char	*words;		/* T_CHOICE: space-separated */
+	const char *const *words;	/* T_CHOICE: NULL-terminated */
 	unsigned	 vars;		/* T_EXPR: the variables it may use */
 	const char	*doc;
 };
 
-extern const struct row rows[];
-extern const size_t nrows;
+#define PATH_LEN	96	/* longest dotted path of a setting */
 
-const struct row *row_find(const char *path, enum where);
+/*
+ * Every struct a table describes begins its bookkeeping with this: where
+ * the group was given and the path the user wrote, for messages, then
+ * an int given[] with the line of each row given, or 0.
+ */
+struct group_at {
+	int		 line;		/* 0: the group was not given */
+	char		 path[PATH_LEN];	/* "area.receptacle"; "" on top */
+};
+
+struct table {
+	const struct row *rows;
+	size_t		 n;
+	size_t		 at;	/* offset of the struct group_at */
+	size_t		 given;	/* offset of int given[n] */
+};
+
+#define TABLE(rows_, type_) { (rows_), sizeof(rows_) / sizeof((rows_)[0]), \
+	offsetof(type_, at), offsetof(type_, given) }
+
+/* The line to report a problem with row id of p at: its own, else its group's. */
+#define GIVEN_AT(p, id)	((p)->given[id] ? (p)->given[id] : \
+	(p)->at.line > 0 ? (p)->at.line : 1)
+
+/* The tables, one setting a line, for the test that checks the man page. */
+void	settings_list(FILE *);
 
 #endif

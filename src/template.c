@@ -18,8 +18,8 @@
  * file can put code into the output.
  *
  * Why our own: the Debian template engines are for web pages (ctemplate
- * is C++, mustache implementations escape for HTML); ours needs about
- * 300 lines, error lines, and a per-organ loop that costs nothing.
+ * is C++, mustache implementations escape for HTML); ours is one small
+ * file with error lines, and a per-organ loop that costs nothing.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -28,12 +28,10 @@
 #include <string.h>
 
 #include "diag.h"
+#include "phyllo.h"
 #include "mem.h"
 #include "template.h"
 
-#ifndef VERSION
-#define VERSION "0.0"
-#endif
 
 enum seg_kind { SEG_TEXT, SEG_VAR, SEG_BEGIN, SEG_END };
 
@@ -61,15 +59,15 @@ tmpl_organ(const struct tmpl_ctx *c)
 /* The placeholders every template has. */
 
 static void put_name(struct sink *s, const struct tmpl_ctx *c)
-{ sink_puts(s, c->sc->name); }
+{ sink_puts(s, c->r->name); }
 static void put_count(struct sink *s, const struct tmpl_ctx *c)
 { sink_uint(s, c->r->count); }
 static void put_model(struct sink *s, const struct tmpl_ctx *c)
-{ sink_puts(s, scene_model_name(c->sc->model)); }
+{ sink_puts(s, c->r->model); }
 static void put_divergence(struct sink *s, const struct tmpl_ctx *c)
 { sink_num(s, c->r->divergence); }
 static void put_seed(struct sink *s, const struct tmpl_ctx *c)
-{ sink_num(s, (double)c->sc->seed); }
+{ sink_num(s, (double)c->r->seed); }
 static void put_version(struct sink *s, const struct tmpl_ctx *c)
 { (void)c; sink_puts(s, VERSION); }
 static void put_object_count(struct sink *s, const struct tmpl_ctx *c)
@@ -82,9 +80,9 @@ static void put_object_count(struct sink *s, const struct tmpl_ctx *c)
 static void
 put_scene(struct sink *s, const struct tmpl_ctx *c)
 {
-	const char *base = strrchr(c->sc->file, '/');
+	const char *base = strrchr(c->r->source, '/');
 
-	for (base = base ? base + 1 : c->sc->file; *base != '\0'; base++) {
+	for (base = base ? base + 1 : c->r->source; *base != '\0'; base++) {
 		unsigned char ch = (unsigned char)*base;
 		int safe = (ch < 0x80 && isalnum(ch)) || strchr(".-_", ch);
 
@@ -140,9 +138,14 @@ ORGAN_FIELD(put_z, o->pos[2])
 ORGAN_FIELD(put_ux, o->u[0])
 ORGAN_FIELD(put_uy, o->u[1])
 ORGAN_FIELD(put_uz, o->u[2])
-ORGAN_FIELD(put_vx, o->w[1] * o->u[2] - o->w[2] * o->u[1])
-ORGAN_FIELD(put_vy, o->w[2] * o->u[0] - o->w[0] * o->u[2])
-ORGAN_FIELD(put_vz, o->w[0] * o->u[1] - o->w[1] * o->u[0])
+/* v is not stored: organ_v() derives it, here as everywhere. */
+#define ORGAN_V(fn, k)							\
+static void fn(struct sink *s, const struct tmpl_ctx *c)		\
+{ double v[3]; organ_v(tmpl_organ(c), v); sink_num(s, v[k]); }
+
+ORGAN_V(put_vx, 0)
+ORGAN_V(put_vy, 1)
+ORGAN_V(put_vz, 2)
 ORGAN_FIELD(put_wx, o->w[0])
 ORGAN_FIELD(put_wy, o->w[1])
 ORGAN_FIELD(put_wz, o->w[2])
@@ -430,10 +433,10 @@ write_run(const struct tmpl *t, size_t from, size_t to, struct sink *s,
 }
 
 void
-tmpl_write(const struct tmpl *t, struct sink *s, const struct scene *sc,
-    const struct result *r, unsigned opts)
+tmpl_write(const struct tmpl *t, struct sink *s, const struct result *r,
+    unsigned opts)
 {
-	struct tmpl_ctx c = { sc, r, opts, TS_GLOBAL, 0, 0 };
+	struct tmpl_ctx c = { r, opts, TS_GLOBAL, 0, 0 };
 	size_t i = 0, from = 0;
 
 	for (; i < t->nsegs; i++) {

@@ -5,7 +5,6 @@
 #include <stddef.h>
 
 #include "organ.h"
-#include "scene.h"
 #include "sink.h"
 
 #define TMPL_BYTES_MAX	(1024 * 1024)
@@ -19,7 +18,6 @@
 #define TO_OBJECTS	0x1	/* --blender-objects */
 
 struct tmpl_ctx {
-	const struct scene	*sc;
 	const struct result	*r;
 	unsigned		 opts;		/* TO_* */
 	int			 scope;		/* TS_* being written */
@@ -43,7 +41,7 @@ struct tmpl	*tmpl_builtin(const char *name, const struct tmpl_var *extra);
 struct tmpl	*tmpl_parse(const char *file, const char *text, size_t len,
 		    const struct tmpl_var *extra);
 void		 tmpl_write(const struct tmpl *, struct sink *,
-		    const struct scene *, const struct result *, unsigned opts);
+		    const struct result *, unsigned opts);
 void		 tmpl_free(struct tmpl *);
 
 /* Helpers for writers' placeholders. */

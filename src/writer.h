@@ -7,9 +7,8 @@
 #include "sink.h"
 #include "template.h"
 
-/* Writers only read; errors in the sink are reported by the caller. */
-typedef void writer_fn(struct sink *, const struct scene *,
-    const struct result *);
+/* Writers only read the result; errors in the sink are the caller's. */
+typedef void writer_fn(struct sink *, const struct result *);
 
 /*
  * A format writes either through its own function, or from a template
@@ -19,11 +18,14 @@ struct writer {
 	const char	*name;	/* its option, without the dashes */
 	writer_fn	*write;
 	const char	*tmpl;	/* default template in templates/ */
+	const char	*arrays_tmpl;	/* --arrays: this one instead */
+	unsigned	 opts;		/* TO_* options it takes */
 	const struct tmpl_var *vars;
 	int		(*check)(const struct scene *);
 	const char	*help;
 };
 
+/* Every format, ending with a NULL name (writers.c). */
 extern const struct writer writers[];
 
 writer_fn csv_write;
@@ -33,6 +35,5 @@ writer_fn svg_write;
 extern const struct tmpl_var pov_vars[];
 int	pov_check(const struct scene *);
 extern const struct tmpl_var blender_vars[];
-int	blender_check(const struct scene *);
 
 #endif

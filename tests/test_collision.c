@@ -116,7 +116,7 @@ properties(const char *what, const struct scene *sc, const struct result *res,
 	double worst_touch = 0, (*b)[2];
 	int npts;
 
-	b = receptacle_points(sc, &npts);
+	b = receptacle_points(sc, collision_receptacle(sc), &npts);
 	for (size_t i = 0; i < res->count; i++) {
 		double rho = hypot(o[i].pos[0], o[i].pos[1]), nearest = HUGE_VAL;
 

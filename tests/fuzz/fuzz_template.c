@@ -22,7 +22,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
 	if (!ready) {
 		if (scene_load_buffer(&sc, "t.cfg", text, strlen(text)) != 0 ||
-		    planar_run(&sc, &res) != 0 || organs_apply(&sc, &res) != 0)
+		    model_run(&sc, &res) != 0)
 			return 0;
 		ready = 1;
 	}
@@ -30,7 +30,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	    pov_vars)) == NULL)
 		return 0;
 	sink_init(&s, NULL);
-	tmpl_write(t, &s, &sc, &res, 0);
+	tmpl_write(t, &s, &res, 0);
 	sink_free(&s);
 	tmpl_free(t);
 	return 0;
