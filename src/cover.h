@@ -71,9 +71,9 @@ int	cover_skip(struct cover *, double *t, int32_t j, double r,
 	    int32_t *row);
 
 /*
- * A walk found column j's head cell k blocked all along its meridian;
- * covered tells whether the cell is now proven covered.  If not, it
- * becomes an exception and the head moves on.
+ * A walk found column j's head cell k blocked all along its meridian.
+ * If the cell cannot now be proven covered everywhere, it becomes an
+ * exception; either way the head moves on.
  */
 void	cover_passed(struct cover *, int32_t j, int32_t k);
 

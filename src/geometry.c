@@ -98,3 +98,47 @@ parastichies(const struct result *r, size_t k, int pair[2])
 		pair[1] = t;
 	}
 }
+
+/*
+ * Does a divergence of deg degrees line count organs up on rays?  It
+ * does when deg/360 is so near a fraction p/q, with at least three
+ * organs to a ray (3q <= count), that organ n + q lands beside organ n
+ * and the drift along the whole ray stays below the gap between rays:
+ * count |q x - p| < 1, x = deg/360.  The continued fraction of x gives
+ * the only q worth trying.  137.5 degrees is 55/144 of a turn exactly;
+ * the golden angle is never near enough (q |q x - p| tends to 1/sqrt 5).
+ */
+int
+divergence_rays(double deg, size_t count, long long *p, long long *q)
+{
+	double x = fabs(deg) / 360, f = x - floor(x);
+	long long h0 = 1, h1 = (long long)floor(x), k0 = 0, k1 = 1;
+
+	for (int i = 0; i < 64 && 3 * (double)k1 <= (double)count; i++) {
+		double a;
+
+		if (fabs((double)k1 * x - (double)h1) * (double)count < 1 &&
+		    k1 > 1) {
+			*p = h1;
+			*q = k1;
+			return 1;
+		}
+		if (f < 1e-15)
+			break;
+		f = 1 / f;
+		a = floor(f);
+		f -= a;
+		if (a > 1e15)
+			break;
+		{
+			long long h = (long long)a * h1 + h0;
+			long long k = (long long)a * k1 + k0;
+
+			h0 = h1;
+			h1 = h;
+			k0 = k1;
+			k1 = k;
+		}
+	}
+	return 0;
+}

@@ -70,6 +70,9 @@ void	frame_revolution(struct organ *, double phi, double rho, double z,
 void	frame_revolution_cs(struct organ *, double phi, double c, double s,
 	    double rho, double z, double t_rho, double t_z);
 
+/* Whether deg lines count organs up on q rays, deg/360 being near p/q. */
+int	divergence_rays(double deg, size_t count, long long *p, long long *q);
+
 /* n * deg reduced to [0, 360), without the rounding of the product. */
 double	angle_mod360(double n, double deg);
 

@@ -43,6 +43,9 @@ model_run(const struct scene *sc, struct result *res)
 		snprintf(res->objects[i], sizeof(res->objects[i]), "%s",
 		    sc->objects[i]);
 	res->nobjects = sc->nobjects;
+	if (!divergence_rays(res->divergence, res->count, &res->rays_p,
+	    &res->rays))
+		res->rays = res->rays_p = 0;
 	if (organs_apply(sc, res) != 0) {
 		result_free(res);
 		return -1;

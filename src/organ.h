@@ -53,6 +53,8 @@ struct result {
 	const char	*model;		/* the model's name (static) */
 	long long	 seed;
 	enum projection	 svg;		/* the model's preferred view */
+	long long	 rays, rays_p;	/* the divergence is rays_p/rays of a
+					   turn and lines organs up; or 0 */
 	char		*source;	/* the scene file as named, owned */
 	char		(*objects)[NAME_LEN + 1];	/* owned */
 	size_t		 nobjects;

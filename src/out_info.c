@@ -44,4 +44,21 @@ info_write(struct sink *s, const struct result *r)
 	sink_putc(s, '\n');
 	for (int i = 0; i < r->ninfo; i++)
 		line(s, r->info[i].key, r->info[i].nval, r->info[i].val);
+	if (r->rays > 0) {
+		/* Spokes instead of spirals: rarely what was meant. */
+		double rays = (double)r->rays;
+
+		line(s, "rays", 1, &rays);
+		sink_puts(s, "warning: divergence ");
+		sink_num(s, r->divergence);
+		sink_puts(s, " is ");
+		sink_uint(s, (unsigned long long)r->rays_p);
+		sink_putc(s, '/');
+		sink_uint(s, (unsigned long long)r->rays);
+		sink_puts(s, " of a turn: from organ ");
+		sink_uint(s, (unsigned long long)r->rays);
+		sink_puts(s, " on, organs line up on ");
+		sink_uint(s, (unsigned long long)r->rays);
+		sink_puts(s, " rays instead of spirals\n");
+	}
 }

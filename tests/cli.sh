@@ -22,6 +22,17 @@ for f in $(formats); do
 done
 end
 
+# The manual's model sections are the list to hold --help against.
+try "--help names every model the manual describes, and each is accepted" px --help
+man_models=$(sed -n 's/^\.Sh THE \([A-Z-]*\) MODEL$/\1/p' man/phyllo-export.5 | tr 'A-Z' 'a-z')
+assert "the manual describes models" '[ $(echo $man_models | wc -w) -ge 3 ]'
+for m in $man_models; do
+	grep -q "^  $m  " "$OUT/stdout" || bad="$bad; --help misses $m"
+	printf 'model = "%s";\n' "$m" | px --info - 2>&1 | grep -q 'is not one of' &&
+		bad="$bad; model \"$m\" refused"
+done
+end
+
 try "--version prints the version" px --version
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "name and number" 'grep -Eq "^phyllo-export [0-9]+\.[0-9]+" $OUT/stdout'
@@ -287,3 +298,16 @@ if command -v script >/dev/null; then
 else
 	skip "script(1) not found: the progress line on a terminal"
 fi
+
+# 137.5 degrees is 55/144 of a turn: organs n and n + 144 share a ray.
+printf 'model = "planar";\ncount = 1000;\ndivergence = 137.5;\n' >"$OUT/rays.cfg"
+try "--info warns of a divergence that makes rays, and says how many" px --info "$OUT/rays.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "rays: 144" 'grep -qx "rays: 144" $OUT/stdout'
+assert "the warning names the fraction and the organ" 'grep -q "^warning: divergence 137.5 is 55/144 of a turn: from organ 144 on" $OUT/stdout'
+px --csv "$OUT/rays.cfg" >"$OUT/rays.csv"
+assert "and organs n and n+144 do lie on one ray" 'awk -F, "NR > 1 { a[\$1] = atan2(\$4, \$3) } END { for (n = 0; n + 144 < 1000; n++) { d = a[n + 144] - a[n]; if (d < 0) d = -d; if (d > 1e-7 && d < 6.283185) exit 1 } }" $OUT/rays.csv'
+end
+try "the golden angle makes no rays" px --info "$SUN"
+assert "no rays line, no warning" '! grep -q "^rays:\|^warning:" $OUT/stdout'
+end

@@ -253,10 +253,111 @@ cover_agrees(void)
 	}
 }
 
+/*
+ * The presets against their closed forms, computed here and not from
+ * receptacle.c: every point of the generating curve (sampled from the
+ * control points by the test's own Bezier evaluation) and every placed
+ * centre must satisfy the shape's equation, and the curve must run
+ * from the base named in the man page to the tip.  R = 0.7, H = 1.3.
+ */
+#define PR	0.7
+#define PH	1.3
+
+/* How far (rho, z) is from the preset's surface, in units of length. */
+static double
+off_preset(const char *shape, double rho, double z)
+{
+	double rs = (PR * PR + PH * PH) / (2 * PH);	/* the cap's sphere */
+
+	if (strcmp(shape, "disk") == 0)
+		return fabs(z) + fmax(rho - PR, 0);
+	if (strcmp(shape, "cone") == 0)		/* rho/R + z/H = 1 */
+		return fabs(rho / PR + z / PH - 1) / hypot(1 / PR, 1 / PH);
+	if (strcmp(shape, "cylinder") == 0)
+		return fabs(rho - PR) + fmax(-z, 0) + fmax(z - PH, 0);
+	if (strcmp(shape, "hemisphere") == 0)
+		return fabs(hypot(rho, z) - PR) + fmax(-z, 0);
+	if (strcmp(shape, "sphere") == 0)	/* centre (0, R) */
+		return fabs(hypot(rho, z - PR) - PR);
+	if (strcmp(shape, "cap") == 0)		/* centre (0, H - rs) */
+		return fabs(hypot(rho, z - (PH - rs)) - rs) + fmax(-z, 0);
+	/* ellipsoid: semi-axes R across and H/2 along, centre (0, H/2) */
+	return fabs(hypot(rho / PR, (z - PH / 2) / (PH / 2)) - 1) *
+	    fmin(PR, PH / 2);
+}
+
+static void
+presets(void)
+{
+	static const struct {
+		const char	*shape;
+		double		 base[2], tip[2];
+		int		 height;	/* takes receptacle.height */
+	} shapes[] = {
+		{ "disk", { PR, 0 }, { 0, 0 }, 0 },
+		{ "cone", { PR, 0 }, { 0, PH }, 1 },
+		{ "cylinder", { PR, 0 }, { PR, PH }, 1 },
+		{ "hemisphere", { PR, 0 }, { 0, PR }, 0 },
+		{ "sphere", { 0, 0 }, { 0, 2 * PR }, 0 },
+		{ "cap", { PR, 0 }, { 0, PH }, 1 },
+		{ "ellipsoid", { 0, 0 }, { 0, PH }, 1 },
+	};
+
+	for (size_t i = 0; i < sizeof(shapes) / sizeof(shapes[0]); i++) {
+		const char *shape = shapes[i].shape;
+		char cfg[256];
+		struct scene sc;
+		struct result res = { 0 };
+		double (*b)[2], worst = 0, worst_c = 0, ends;
+		int n;
+
+		snprintf(cfg, sizeof(cfg), "collision = { receptacle = { "
+		    "shape = \"%s\"; radius = %.17g; %s%.17g%s }; radius = "
+		    "0.05; }; count = 200;", shape, PR, shapes[i].height ?
+		    "height = " : "/* ", PH, shapes[i].height ? ";" : " */");
+		if (load(&sc, cfg) != 0 || collision_place(&sc, &res,
+		    PLACE_EXACT) != 0 || (b = receptacle_points(&sc,
+		    collision_receptacle(&sc), &n)) == NULL) {
+			check(0, "preset %s: loads and runs", shape);
+			scene_free(&sc);
+			continue;
+		}
+		for (int k = 0; k + 3 < n; k += 3)
+			for (int j = 0; j <= 1000; j++) {
+				double u = j / 1000.0, v = 1 - u, p[2];
+
+				for (int c = 0; c < 2; c++)
+					p[c] = v * v * v * b[k][c] +
+					    3 * v * v * u * b[k + 1][c] +
+					    3 * v * u * u * b[k + 2][c] +
+					    u * u * u * b[k + 3][c];
+				worst = fmax(worst, off_preset(shape, p[0],
+				    p[1]));
+			}
+		for (size_t k = 0; k < res.count; k++)
+			worst_c = fmax(worst_c, off_preset(shape,
+			    hypot(res.organs[k].pos[0], res.organs[k].pos[1]),
+			    res.organs[k].pos[2]));
+		ends = fmax(hypot(b[0][0] - shapes[i].base[0], b[0][1] -
+		    shapes[i].base[1]), hypot(b[n - 1][0] - shapes[i].tip[0],
+		    b[n - 1][1] - shapes[i].tip[1]));
+		/* Circular arcs as cubic Beziers are within 5e-6 of radius. */
+		check(worst < 5e-6 && worst_c < 5e-6 && ends < 1e-12 &&
+		    res.count > 20, "preset %s: the curve and %zu centres lie "
+		    "on its closed form (worst %.2g, %.2g), base and tip "
+		    "where the manual says (%.2g)", shape, res.count, worst,
+		    worst_c, ends);
+		free(b);
+		result_free(&res);
+		scene_free(&sc);
+	}
+}
+
 int
 main(void)
 {
 	check_topic = "collision: ";
+	presets();
 	cover_agrees();
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
 		struct scene sc;

@@ -455,20 +455,31 @@ static void
 test_unterminated(void)
 {
 	static const char crash[] = "model 102\273\ncyli= [0";
-	static const char *const texts[] = { crash, "model = \"planar\";\n"
-	    "count = 12", "model = \"planar\"; count = 0x1F" };
+	static const struct {
+		const char	*text;
+		int		 rc;
+		long long	 count;	/* as read from the last bytes */
+	} t[] = {
+		{ crash, -1, 0 },
+		{ "model = \"planar\";\ncount = 12", 0, 12 },
+		{ "model = \"planar\"; count = 0x1F", 0, 31 },
+	};
 
-	for (size_t i = 0; i < 3; i++) {
-		size_t len = strlen(texts[i]);
+	for (size_t i = 0; i < sizeof(t) / sizeof(t[0]); i++) {
+		size_t len = strlen(t[i].text);
 		char *buf = malloc(len);
 		struct scene sc;
+		int rc;
 
-		memcpy(buf, texts[i], len);
-		scene_load_buffer(&sc, "t.cfg", buf, len);
+		memcpy(buf, t[i].text, len);
+		rc = scene_load_buffer(&sc, "t.cfg", buf, len);
+		check(rc == t[i].rc && (rc != 0 || sc.count == t[i].count),
+		    "scene text need not end in NUL: text %zu %s (fuzz_scene "
+		    "regression)", i + 1, t[i].rc ? "refused" : "read to its "
+		    "last digit");
 		scene_free(&sc);
 		free(buf);
 	}
-	check(1, "scene text need not end in NUL (fuzz_scene regression)");
 }
 
 int
