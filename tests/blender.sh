@@ -1,22 +1,19 @@
 #!/bin/sh
-# blender.sh - the --blender script in the real Blender (blender -b):
-# run twice into a .blend with the artist's own Seed object and Bract
-# collection, then compare the evaluated instances with the CSV; the
-# same for linked duplicates and for an empty file (placeholders only).
+# blender.sh - the --blender script in every real Blender the suite
+# finds (BLENDERS: the system's blender and the Debian roots made by
+# tests/blender-root.sh, 3.4 to 5.x).  In each: run twice into a saved
+# .blend holding the artist's own Seed object and Bract collection,
+# then hold the evaluated instances (object, position, rotation and
+# scale) against the CSV; the same for linked duplicates and for an
+# empty file (placeholders only); every example scene in one process;
+# a too-old Blender's one-line refusal; the import add-on.
 . tests/lib.sh
 
-if [ -z "${BLENDER:-}" ]; then
+: "${BLENDERS:=${BLENDER:-}}"
+if [ -z "$BLENDERS" ]; then
 	skip "Blender not found: Blender tests (apt-get install blender)"
 	exit 0
 fi
-
-# blend ARGS...: Blender without a window, failing on a Python error.
-blend() {
-	"$BLENDER" -b --python-exit-code 1 "$@" >"$OUT/blender.log" 2>&1
-}
-
-blend --factory-startup --python tests/blender/make_blend.py -- "$OUT/artist.blend" ||
-	notok "make the test .blend: $(tail -3 "$OUT/blender.log")"
 
 cat >"$OUT/head.cfg" <<'CFG'
 name = "Head";
@@ -24,7 +21,7 @@ model = "planar";
 count = 200;
 planar = { scale = 0.1; dome = 0.3; };
 organs = (
-  { object = "Seed"; to = 99; },
+  { object = "Seed"; to = 99; tilt = 15; roll = "40 * rand(2)"; },
   { object = "Bract"; from = 100; to = 149; tilt = 30; },
   { object = "Petal"; from = 150; roll = "20 * rand(1)"; }
 );
@@ -32,6 +29,17 @@ CFG
 px --csv -o "$OUT/head.csv" "$OUT/head.cfg"
 px --blender -o "$OUT/head.py" "$OUT/head.cfg"
 px --blender --blender-objects -o "$OUT/head-obj.py" "$OUT/head.cfg"
+sed 's/"Bract"/"Leaf"/' "$OUT/head.cfg" >"$OUT/bare.cfg"
+px --csv -o "$OUT/bare.csv" "$OUT/bare.cfg"
+px --blender -o "$OUT/bare.py" "$OUT/bare.cfg"
+for cfg in scenes/*.cfg; do
+	px --blender -o "$OUT/scene-$(basename "$cfg" .cfg).py" "$cfg"
+done
+printf 'model = "planar";\ncount = 0;\n' >"$OUT/bad-addon.cfg"
+ADDON_ZIP=$TESTBIN/phyllo_import.zip
+# Statically linked: it runs inside the roots, whose libconfig differs.
+ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
+DAISY_COUNT=$(px --info scenes/daisy.cfg | sed -n 's/^count: //p')
 
 # Blender depends on python3, so it is here whenever Blender is.
 try "the script is Python that names organs only as data" python3 -c '
@@ -43,40 +51,89 @@ assert ast.literal_eval(objs.value) == [("Seed", 100), ("Bract", 50), ("Petal", 
 assert "parses, OBJECTS is a literal" '[ $rc -eq 0 ]'
 end
 
-try "run twice into the artist's .blend: instances of their Seed and Bract at the CSV frames, one copy" \
-	blend "$OUT/artist.blend" --python "$OUT/head.py" --python "$OUT/head.py" \
-	--python tests/blender/check.py -- "$OUT/head.csv" Head instances
-cp "$OUT/blender.log" "$OUT/instances.log"
-assert "Blender exit 0" '[ $rc -eq 0 ]'
-assert "all checks" '! grep -q "check: FAILED" $OUT/instances.log && [ $(grep -c "check: ok" $OUT/instances.log) -ge 6 ]'
-assert "says what it did" 'grep -q "phyllo-export: built collection .Head.: 200 organs of 3 objects" $OUT/instances.log'
-end
+for b in $BLENDERS; do
+	# A directory is a Debian root holding a Blender of its own.
+	if [ -d "$b" ]; then
+		bl() { sh tests/blender-in-root.sh "$b" "$@"; }
+	else
+		bl() { "$b" "$@"; }
+	fi
+	ver=$(bl --version 2>/dev/null | sed -n 's/^Blender \([0-9.]*\).*/\1/p' | head -1)
+	V="Blender ${ver:-?}"
+	# blend ARGS...: this Blender without a window, failing on a Python error.
+	blend() { bl -b --python-exit-code 1 "$@" >"$OUT/blender.log" 2>&1; }
+	D=$OUT/$ver
+	mkdir -p "$D"
+	# addon ARGS...: tests/blender/addon.py with a user folder of its own.
+	addon() (
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
+		blend --factory-startup --python tests/blender/addon.py -- "$@"
+	)
 
-try "--blender-objects: linked duplicates sharing the organ's mesh, run twice" \
-	blend "$OUT/artist.blend" --python "$OUT/head-obj.py" --python "$OUT/head-obj.py" \
-	--python tests/blender/check.py -- "$OUT/head.csv" Head objects
-cp "$OUT/blender.log" "$OUT/objects.log"
-assert "Blender exit 0" '[ $rc -eq 0 ]'
-assert "all checks" '! grep -q "check: FAILED" $OUT/objects.log && [ $(grep -c "check: ok" $OUT/objects.log) -ge 6 ]'
-end
+	try "$V: make the artist's .blend (saved, then reopened)" \
+		blend --factory-startup --python tests/blender/make_blend.py -- "$D/artist.blend"
+	assert "Blender exit 0" '[ $rc -eq 0 ] && [ -s "$D/artist.blend" ]'
+	end
 
-# Nothing in the file: every organ gets a placeholder.
-sed 's/"Bract"/"Leaf"/' "$OUT/head.cfg" >"$OUT/bare.cfg"
-px --csv -o "$OUT/bare.csv" "$OUT/bare.cfg"
-px --blender -o "$OUT/bare.py" "$OUT/bare.cfg"
-try "in an empty file placeholders stand in for every organ" \
-	blend --factory-startup --python "$OUT/bare.py" --python "$OUT/bare.py" \
-	--python tests/blender/check.py -- "$OUT/bare.csv" Head instances
-cp "$OUT/blender.log" "$OUT/bare.log"
-assert "Blender exit 0" '[ $rc -eq 0 ]'
-assert "all checks" '! grep -q "check: FAILED" $OUT/bare.log && [ $(grep -c "check: ok" $OUT/bare.log) -ge 5 ]'
-end
-
-# Every example scene builds.
-for cfg in scenes/*.cfg; do
-	px --blender -o "$OUT/scene.py" "$cfg"
-	try "scene $cfg builds in Blender" blend --factory-startup --python "$OUT/scene.py"
+	try "$V: run twice into the artist's .blend: instances of their Seed and Bract at the CSV positions, rotations and scales, one copy" \
+		blend "$D/artist.blend" --python "$OUT/head.py" --python "$OUT/head.py" \
+		--python tests/blender/check.py -- "$OUT/head.csv" Head instances
+	cp "$OUT/blender.log" "$D/instances.log"
 	assert "Blender exit 0" '[ $rc -eq 0 ]'
-	assert "built" 'grep -q "phyllo-export: built collection" $OUT/blender.log'
+	assert "all checks" '! grep -q "check: FAILED" $D/instances.log && [ $(grep -c "check: ok" $D/instances.log) -ge 6 ]'
+	assert "says what it did" 'grep -q "phyllo-export: built collection .Head.: 200 organs of 3 objects" $D/instances.log'
+	assert "no traceback" '! grep -q Traceback $D/instances.log'
+	end
+
+	try "$V: --blender-objects: linked duplicates sharing the organ's mesh, run twice" \
+		blend "$D/artist.blend" --python "$OUT/head-obj.py" --python "$OUT/head-obj.py" \
+		--python tests/blender/check.py -- "$OUT/head.csv" Head objects
+	cp "$OUT/blender.log" "$D/objects.log"
+	assert "Blender exit 0" '[ $rc -eq 0 ]'
+	assert "all checks" '! grep -q "check: FAILED" $D/objects.log && [ $(grep -c "check: ok" $D/objects.log) -ge 6 ]'
+	end
+
+	try "$V: in an empty file placeholders stand in for every organ" \
+		blend --factory-startup --python "$OUT/bare.py" --python "$OUT/bare.py" \
+		--python tests/blender/check.py -- "$OUT/bare.csv" Head instances
+	cp "$OUT/blender.log" "$D/bare.log"
+	assert "Blender exit 0" '[ $rc -eq 0 ]'
+	assert "all checks" '! grep -q "check: FAILED" $D/bare.log && [ $(grep -c "check: ok" $D/bare.log) -ge 5 ]'
+	end
+
+	# Every example scene, in one Blender process.
+	blend --factory-startup --python tests/blender/run_all.py -- "$OUT"/scene-*.py
+	cp "$OUT/blender.log" "$D/scenes.log"
+	for cfg in scenes/*.cfg; do
+		s=$OUT/scene-$(basename "$cfg" .cfg).py
+		what="$V: scene $cfg builds"
+		if grep -q "^run_all: ok $s\$" "$D/scenes.log"; then
+			ok "$what"
+		else
+			notok "$what: $(grep "^run_all: FAILED $s" "$D/scenes.log" || tail -3 "$D/scenes.log")"
+		fi
+	done
+
+	# The add-on, installed into a user folder of its own.
+	if [ -f "$ADDON_ZIP" ] && [ -x "$ADDON_PROG" ]; then
+		rm -rf "$D/user"
+		try "$V: the import add-on installs, imports, re-imports and reports a bad scene" \
+			addon "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
+			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:"
+		cp "$OUT/blender.log" "$D/addon.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 6 ]'
+		end
+	else
+		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"
+	fi
+
+	# As if this Blender were older than the oldest the script knows.
+	sed 's/^OLDEST = (3, 4, 0)/OLDEST = (99, 0, 0)/' "$OUT/head.py" >"$D/future.py"
+	try "$V: a Blender the script does not know gets one line, not a traceback" \
+		blend --factory-startup --python "$D/future.py"
+	assert "exit 1" '[ $rc -eq 1 ]'
+	assert "one line naming the version and what is missing" 'grep -q "^phyllo-export: this script needs Blender 99.0 or newer .*; this is Blender $ver" $OUT/blender.log'
+	assert "no traceback, nothing built" '! grep -q "Traceback\|built collection" $OUT/blender.log'
 	end
 done

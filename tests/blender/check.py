@@ -100,6 +100,11 @@ check(len([c for c in bpy.data.collections if c.name == name or
 orphans = [d.name for d in list(bpy.data.meshes) + list(bpy.data.node_groups)
            if d.users == 0]
 check(not orphans, "no orphan meshes or node groups %s" % orphans)
+groups = [g for g in bpy.data.node_groups if g.get(TAG) == name]
+if mode == "instances":
+    check(groups and all(getattr(g, "is_modifier", True) for g in groups),
+          "the node groups are offered in the modifier's picker "
+          "(is_modifier where Blender has it)")
 seed = bpy.data.objects.get("Seed")
 if seed is not None and seed.get(TAG) is None:
     check(tuple(seed.location) == (5, 5, 5) and len(seed.data.vertices) == 8,

@@ -1,0 +1,70 @@
+# addon.py - the import add-on as an artist meets it: installed from the
+# zip the way this Blender expects (an extension from 4.2 on, a legacy
+# add-on before), enabled, in File > Import, run on a scene, run again,
+# and run on a bad scene.  Usage:
+#   blender -b --factory-startup --python addon.py -- ZIP GOOD.cfg COUNT BAD.cfg WHERE
+# where COUNT is the good scene's organ count and WHERE the FILE:LINE
+# the bad scene's error names.  Prints "check: ..." lines like check.py.
+import sys
+
+import bpy
+
+zip_path, good, count, bad, where = sys.argv[sys.argv.index("--") + 1:][:5]
+count = int(count)
+failures = []
+
+
+def check(ok, what):
+    print("check: %s %s" % ("ok" if ok else "FAILED", what))
+    if not ok:
+        failures.append(what)
+
+
+if bpy.app.version >= (4, 2, 0):
+    bpy.ops.extensions.package_install_files(
+        filepath=zip_path, repo="user_default", enable_on_install=True)
+else:
+    bpy.ops.preferences.addon_install(filepath=zip_path)
+    bpy.ops.preferences.addon_enable(module="phyllo_import")
+
+check(hasattr(bpy.types, "IMPORT_SCENE_OT_phyllotaxis"),
+      "the add-on is installed and enabled")
+menu = [f.__name__ for f in bpy.types.TOPBAR_MT_file_import._dyn_ui_initialize()]
+check("menu_import" in menu, "File > Import lists it")
+
+
+def organs():
+    """Organs in the built collection: points of its point clouds."""
+    tops = [c for c in bpy.context.scene.collection.children
+            if c.get("phyllo_export")]
+    made = [c for c in bpy.data.collections if c.get("phyllo_export")]
+    return len(tops), sum(len(o.data.vertices) for c in made
+                          for o in c.objects if o.get("phyllo_export")
+                          and o.type == "MESH" and o.modifiers)
+
+
+bpy.ops.import_scene.phyllotaxis(filepath=good)
+check(organs() == (1, count), "the import builds one collection of %d "
+      "organs (%r)" % (count, organs()))
+bpy.ops.import_scene.phyllotaxis(filepath=good)
+check(organs() == (1, count), "a second import replaces the first (%r)"
+      % (organs(),))
+
+
+def contents():
+    return sorted((kind, d.name) for kind in ("objects", "collections",
+                  "meshes", "node_groups")
+                  for d in getattr(bpy.data, kind))
+
+
+before = contents()
+try:
+    bpy.ops.import_scene.phyllotaxis(filepath=bad)
+    message = ""
+except RuntimeError as e:
+    message = str(e)
+check(where in message and "phyllo-export:" in message,
+      "a bad scene is reported with our FILE:LINE message (%r)" % message)
+check(contents() == before, "and changes nothing in the .blend")
+if failures:
+    raise SystemExit("check: %d failed" % len(failures))
