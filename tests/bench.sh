@@ -74,26 +74,16 @@ if [ -n "${POVRAY:-}" ]; then
 	}'
 fi
 
-if [ -n "${BLENDER:-}" ]; then
-	echo "== Blender (bpy, no numpy), one run each"
-	bl() { "$BLENDER" -b --factory-startup "$@" >/dev/null 2>&1; }
+# Blender: each one the suite finds (BLENDERS: the system's and the
+# Debian roots of tests/blender-root.sh), timed inside Blender.
+: "${BLENDERS:=${BLENDER:-}}"
+if [ -n "$BLENDERS" ]; then
 	for M in 100000 1000000; do
 		printf 'name = "Head";\nmodel = "planar";\ncount = %d;\norgans = ( { object = "Seed"; } );\n' $M >"$OUT/b$M.cfg"
 		"$PHYLLO" --blender -o "$OUT/b$M.py" "$OUT/b$M.cfg"
 	done
-	t0=$(best bl --python-expr pass)
-	# Evaluate the depsgraph too: the instances are then really made.
-	ev='import bpy; bpy.context.evaluated_depsgraph_get()'
-	t1=$(best bl --python "$OUT/b100000.py" --python-expr "$ev")
-	t2=$(best bl --python "$OUT/b1000000.py" --python-expr "$ev")
-	s1=$(wc -c <"$OUT/b100000.py")
-	echo "$t0 $t1 $t2 $s1" | awk '{
-		printf "Blender start-up alone: %.2f s\n", $1
-		printf "100,000 organs: %.2f s beyond start-up; 1,000,000: %.2f s\n", $2 - $1, $3 - $1
-		printf "script size for 100,000 organs: %.1f MB = %.1f bytes an organ\n", $4 / 1e6, $4 / 100000
-	}'
 	# The loop a user would write: one operator call per organ.
-	N=2000
+	N=${NAIVE:-2000}
 	printf 'model = "planar";\ncount = %d;\n' $N >"$OUT/naive.cfg"
 	"$PHYLLO" --blender -o "$OUT/ours.py" "$OUT/naive.cfg"
 	"$PHYLLO" --csv "$OUT/naive.cfg" | awk -F, 'NR == 1 {
@@ -102,11 +92,29 @@ if [ -n "${BLENDER:-}" ]; then
 		END { print "]"
 		print "for x, y, z, s in organs:"
 		print "    bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=2, radius=s, location=(x, y, z))" }' >"$OUT/naive.py"
-	t3=$(date +%s.%N)
-	bl --python "$OUT/naive.py"
-	tn=$(echo "$t3 $(date +%s.%N)" | awk '{ print $2 - $1 }')
-	to=$(best bl --python "$OUT/ours.py" --python-expr "$ev")
-	echo "$t0 $tn $to $N" | awk '{
-		printf "%d organs: per-organ bpy.ops loop %.2f s (one run), ours %.2f s beyond start-up: %.0fx\n", $4, $2 - $1, $3 - $1, ($2 - $1) / ($3 - $1)
-	}'
+	s1=$(wc -c <"$OUT/b100000.py")
+	echo "== Blender import (bpy, no numpy), seconds inside Blender beyond start-up"
+	echo "script size for 100,000 organs: $s1 bytes = $(echo "$s1" | awk '{ printf "%.1f", $1 / 100000 }') bytes an organ"
+	for b in $BLENDERS; do
+		if [ -d "$b" ]; then
+			bl() { sh tests/blender-in-root.sh "$b" "$@"; }
+		else
+			bl() { "$b" "$@"; }
+		fi
+		ver=$(bl --version 2>/dev/null | sed -n 's/^Blender \([0-9.]*\).*/\1/p' | head -1)
+		# inside SCRIPT: the seconds timeit.py measures, best of three.
+		inside() {
+			for i in 1 2 3; do
+				bl -b --factory-startup --python tests/blender/timeit.py -- "$1" 2>/dev/null |
+					sed -n 's/^timeit: //p'
+			done | sort -n | head -1
+		}
+		t1=$(inside "$OUT/b100000.py")
+		t2=$(inside "$OUT/b1000000.py")
+		to=$(inside "$OUT/ours.py")
+		tn=$(bl -b --factory-startup --python tests/blender/timeit.py -- "$OUT/naive.py" 2>/dev/null | sed -n 's/^timeit: //p')
+		echo "$ver $t1 $t2 $to $tn $N" | awk '{
+			printf "Blender %s: 100,000 organs %.2f s, 1,000,000 %.2f s; %d organs: ours %.3f s, per-organ bpy.ops loop %.1f s (one run): %.0fx\n", $1, $2, $3, $6, $4, $5, $5 / $4
+		}'
+	done
 fi
