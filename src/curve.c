@@ -128,6 +128,62 @@ piece_length(const struct piece *p, double u)
 	return piece_measure(p, u, NULL);
 }
 
+/* The area piece p sweeps between u0 and u1, 8-point Gauss-Legendre. */
+static double
+piece_area_gl(const struct piece *p, double u0, double u1)
+{
+	double h = (u1 - u0) / 2, m = (u0 + u1) / 2, sum = 0;
+
+	for (int i = 0; i < 4; i++)
+		for (int sgn = -1; sgn <= 1; sgn += 2) {
+			double x[2], d[2];
+
+			piece_eval(p, m + sgn * h * gl_x[i], x, d);
+			sum += gl_w[i] * x[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
+		}
+	return 2 * M_PI * sum * h;
+}
+
+/*
+ * The same from 0 to u with 4 points, for the inverse's Newton steps:
+ * the table was built with 8 points, adaptively; inside one short piece
+ * the integrand is so smooth that 4 points agree with it to 1e-15.
+ */
+static double
+piece_area_to(const struct piece *p, double u)
+{
+	static const double x4[2] = { 0.3399810435848563, 0.8611363115940526 };
+	static const double w4[2] = { 0.6521451548625461, 0.3478548451374538 };
+	double h = u / 2, sum = 0;
+
+	for (int i = 0; i < 2; i++)
+		for (int sgn = -1; sgn <= 1; sgn += 2) {
+			double x[2], d[2];
+
+			piece_eval(p, h + sgn * h * x4[i], x, d);
+			sum += w4[i] * x[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
+		}
+	return 2 * M_PI * sum * h;
+}
+
+/*
+ * The same, adaptively: halves until the two agree with the whole to
+ * tol, which the smooth pieces of a Bezier curve reach at once; a
+ * cusp (a pole's tangent turning) takes a few levels.
+ */
+static double
+piece_area_adapt(const struct piece *p, double u0, double u1, double whole,
+    double tol, int depth)
+{
+	double m = (u0 + u1) / 2;
+	double a = piece_area_gl(p, u0, m), b = piece_area_gl(p, m, u1);
+
+	if (depth >= 30 || fabs(a + b - whole) <= tol)
+		return a + b;
+	return piece_area_adapt(p, u0, m, a, tol / 2, depth + 1) +
+	    piece_area_adapt(p, m, u1, b, tol / 2, depth + 1);
+}
+
 static double
 seg_polylen(const double (*b)[2])
 {
@@ -183,7 +239,17 @@ curve_init(struct curve *cv, const double (*pts)[2], int npts)
 			p->t1 = k + u1;
 			p->s0 = s;
 			s += piece_measure(p, 1, &a);
-			cv->area += a;
+			p->a0 = cv->area;
+			for (int e = 0; e < 2; e++) {
+				double x[2], d[2];
+
+				piece_eval(p, e, x, d);
+				p->da[e] = 2 * M_PI * x[0] * sqrt(d[0] * d[0] +
+				    d[1] * d[1]);
+			}
+			/* A tolerance in the size of the piece's own area. */
+			cv->area += piece_area_adapt(p, 0, 1, a,
+			    1e-15 * fabs(a) + 1e-300, 0);
 			for (int i = 0; i < 4; i++) {
 				if (p->b[i][0] > cv->rho_max)
 					cv->rho_max = p->b[i][0];
@@ -293,6 +359,85 @@ curve_t(const struct curve *cv, double s)
 		if (fabs(nu - u) < 1e-16)
 			break;
 		u = nu;
+	}
+	return pc->t0 + u * (pc->t1 - pc->t0);
+}
+
+double
+curve_area(const struct curve *cv, double t)
+{
+	double u;
+	const struct piece *pc = &cv->pc[piece_find(cv, t, &u)];
+
+	return pc->a0 + (u > 0 ? piece_area_gl(pc, 0, u) : 0);
+}
+
+double
+curve_t_area(const struct curve *cv, double a, size_t *hint, double p[2],
+    double d[2])
+{
+	size_t i = hint != NULL && *hint < cv->npc ? *hint : 0;
+	const struct piece *pc;
+	double lo = 0, hi = 1, u, want, span;
+
+	if (a <= 0 || a >= cv->area) {
+		double t = a <= 0 ? 0 : cv->tmax;
+
+		if (p != NULL)
+			curve_eval(cv, t, p, d);
+		return t;
+	}
+	if (cv->pc[i].a0 > a)
+		i = 0;
+	while (i + 1 < cv->npc && cv->pc[i + 1].a0 <= a)
+		i++;
+	if (hint != NULL)
+		*hint = i;
+	pc = &cv->pc[i];
+	want = a - pc->a0;
+	span = (i + 1 < cv->npc ? cv->pc[i + 1].a0 : cv->area) - pc->a0;
+	/*
+	 * The first guess takes the area's rate as linear across the piece
+	 * (a quadratic to solve), good to about the cube of the piece's
+	 * length; Newton then needs a step or two, kept inside a bracket.
+	 * A step below 1e-8 leaves an error of its square: done.
+	 */
+	{
+		double f0 = pc->da[0], f1 = pc->da[1], qa = (f1 - f0) / 2;
+		double c = want * (f0 + f1) / (2 * span), disc = f0 * f0 +
+		    4 * qa * c;
+
+		u = span > 0 && f0 + f1 > 0 && disc >= 0 && f0 + sqrt(disc) >
+		    0 ? 2 * c / (f0 + sqrt(disc)) : span > 0 ? want / span : 0.5;
+		if (!(u > 0 && u < 1))
+			u = span > 0 ? want / span : 0.5;
+	}
+	for (int k = 0; k < 60; k++) {
+		double x[2], d[2], f = piece_area_to(pc, u) - want, fp, nu;
+
+		if (f < 0)
+			lo = u;
+		else
+			hi = u;
+		piece_eval(pc, u, x, d);
+		fp = 2 * M_PI * x[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
+		nu = fp > 0 ? u - f / fp : -1;
+		if (!(nu >= lo && nu <= hi)) {
+			nu = (lo + hi) / 2;
+			if (hi - lo <= 1e-15) {
+				u = nu;
+				break;
+			}
+		} else if (fabs(nu - u) < 1e-7) {
+			u = nu;
+			break;
+		}
+		u = nu;
+	}
+	if (p != NULL) {
+		piece_eval(pc, u, p, d);
+		d[0] /= pc->t1 - pc->t0;
+		d[1] /= pc->t1 - pc->t0;
 	}
 	return pc->t0 + u * (pc->t1 - pc->t0);
 }

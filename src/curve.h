@@ -14,6 +14,8 @@ struct piece {
 	double	 c[4][2];	/* the same polynomial in powers of u */
 	double	 t0, t1;	/* the global parameter at its ends */
 	double	 s0;		/* arc length from the base to its start */
+	double	 a0;		/* area swept from the base to its start */
+	double	 da[2];		/* d(area)/du at u = 0 and u = 1 */
 	double	 kappa;		/* g(u) = |p(u) - q|^2 is convex on the
 				   piece for |p - q| < kappa */
 };
@@ -42,6 +44,17 @@ void	curve_eval(const struct curve *, double t, double p[2], double d[2]);
 /* Arc length from the base to t, and its inverse. */
 double	curve_s(const struct curve *, double t);
 double	curve_t(const struct curve *, double s);
+
+/*
+ * The area of the surface swept from the base to t, and its inverse:
+ * the t where that area reaches a, with the point there and dp/dt (p
+ * and d, unless p is NULL).  *hint, if not NULL, is a piece to start
+ * looking from (0 at first), kept for the next call, so that increasing
+ * areas cost O(1) each.
+ */
+double	curve_area(const struct curve *, double t);
+double	curve_t_area(const struct curve *, double a, size_t *hint,
+	    double p[2], double d[2]);
 
 /*
  * The first t' >= t at which the curve is at least sqrt(S2) away from

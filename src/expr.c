@@ -516,6 +516,17 @@ expr_is_constant(const struct expr *e, double *value)
 	return 1;
 }
 
+unsigned
+expr_vars(const struct expr *e)
+{
+	unsigned vars = 0;
+
+	for (size_t i = 0; i < e->n; i++)
+		if (e->code[i].op == OP_VAR)
+			vars |= EXPR_VAR(e->code[i].arg);
+	return vars;
+}
+
 static double
 smoothstep(double e0, double e1, double x)
 {

@@ -46,6 +46,8 @@ struct expr	*expr_compile(const char *src, unsigned vars,
 		    struct expr_error *);
 struct expr	*expr_constant(double);
 int		 expr_is_constant(const struct expr *, double *value);
+/* The variables it reads, as EXPR_VAR() bits. */
+unsigned	 expr_vars(const struct expr *);
 enum expr_status expr_eval(struct expr *, const struct expr_env *,
 		    double *result);
 void		 expr_free(struct expr *);

@@ -142,3 +142,41 @@ divergence_rays(double deg, size_t count, long long *p, long long *q)
 	}
 	return 0;
 }
+
+/*
+ * Stretch placed organs by the diagonal matrix S = diag(k): positions
+ * by S, tangents (u) by S, normals (w) by S's inverse transpose, both
+ * made unit again.  They stay orthogonal, (S u).(S^-1 w) = u.w = 0, and
+ * w stays normal to the stretched surface.  The angle about the axis is
+ * read again from the position when x and y stretch differently.
+ */
+void
+stretch_apply(struct result *res, const double k[3])
+{
+	if (k[0] == 1 && k[1] == 1 && k[2] == 1)
+		return;
+	for (size_t i = 0; i < res->count; i++) {
+		struct organ *o = &res->organs[i];
+		double lu = 0, lw = 0;
+
+		for (int j = 0; j < 3; j++) {
+			o->pos[j] *= k[j];
+			o->u[j] *= k[j];
+			o->w[j] /= k[j];
+			lu += o->u[j] * o->u[j];
+			lw += o->w[j] * o->w[j];
+		}
+		lu = 1 / sqrt(lu);
+		lw = 1 / sqrt(lw);
+		for (int j = 0; j < 3; j++) {
+			o->u[j] *= lu;
+			o->w[j] *= lw;
+		}
+		o->height = o->pos[2];
+		if (k[0] != k[1] && (o->pos[0] != 0 || o->pos[1] != 0)) {
+			o->phi = atan2(o->pos[1], o->pos[0]) * (180 / M_PI);
+			if (o->phi < 0)
+				o->phi += 360;
+		}
+	}
+}

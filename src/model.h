@@ -70,6 +70,9 @@ void	frame_revolution(struct organ *, double phi, double rho, double z,
 void	frame_revolution_cs(struct organ *, double phi, double c, double s,
 	    double rho, double z, double t_rho, double t_z);
 
+/* Stretch the result along x, y, z: positions, frames, heights. */
+void	stretch_apply(struct result *, const double k[3]);
+
 /* Whether deg lines count organs up on q rays, deg/360 being near p/q. */
 int	divergence_rays(double deg, size_t count, long long *p, long long *q);
 

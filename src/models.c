@@ -9,12 +9,14 @@
 #include "mem.h"
 #include "model.h"
 
-extern const struct model planar_model, cylindrical_model, collision_model;
+extern const struct model planar_model, cylindrical_model, collision_model,
+    area_model;
 
 const struct model *const models[] = {
 	&planar_model,
 	&cylindrical_model,
 	&collision_model,
+	&area_model,
 	NULL
 };
 
@@ -33,6 +35,7 @@ model_run(const struct scene *sc, struct result *res)
 	*res = (struct result){0};
 	if (sc->model->run(sc, sc->params, res) != 0)
 		return -1;
+	stretch_apply(res, sc->stretch);
 	memcpy(res->name, sc->name, sizeof(res->name));
 	res->model = sc->model->name;
 	res->seed = sc->seed;

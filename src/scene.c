@@ -215,7 +215,7 @@ set_vec3(struct load *L, const config_setting_t *s, const struct row *r,
 	if ((config_setting_type(s) != CONFIG_TYPE_ARRAY &&
 	    config_setting_type(s) != CONFIG_TYPE_LIST) ||
 	    config_setting_length(s) != 3) {
-		err_at(L, s, "%s must be an array of 3 numbers: [1, 1, 0.5]",
+		err_at(L, s, "%s must be an array of 3 numbers: [1.0, 1.0, 0.5]",
 		    path);
 		return -1;
 	}
@@ -733,6 +733,11 @@ scene_load_buffer(struct scene *sc, const char *file, const char *text,
 		/* Bison says this when nesting overflows its stack. */
 		if (strcmp(why, "memory exhausted") == 0)
 			why = "groups or lists nested too deeply";
+		/* libconfig arrays hold one type: [1, 0.5] mixes two. */
+		else if (strcmp(why, "mismatched element type in array") == 0)
+			why = "mismatched element type in array: write its "
+			    "numbers all alike, [1.0, 0.5] not [1, 0.5], or "
+			    "use a list, (1, 0.5)";
 		diag(ST_SCENE, f != NULL ? f : file,
 		    config_error_line(&cfg), 0, "%s", why);
 	} else

@@ -51,7 +51,8 @@ struct organ_range {
 };
 
 /* The top-level settings (settings.c), by row. */
-enum { S_NAME, S_MODEL, S_DIVERGENCE, S_COUNT, S_SEED, S_ORGANS, S__N };
+enum { S_NAME, S_MODEL, S_DIVERGENCE, S_COUNT, S_SEED, S_STRETCH, S_ORGANS,
+	S__N };
 
 struct model;
 
@@ -64,6 +65,7 @@ struct scene {
 	double		 divergence;	/* degrees */
 	long long	 count;
 	long long	 seed;
+	double		 stretch[3];	/* x, y, z factors of the result */
 	void		*params;	/* the model's own, owned */
 	struct organ_range *ranges;	/* owned */
 	size_t		 nranges;

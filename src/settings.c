@@ -56,6 +56,10 @@ static const struct row scene_rows[] = {
 	[S_SEED] = { .name = "seed", .type = T_INT, .off = S(seed),
 	  .lo = -HUGE_VAL, .hi = HUGE_VAL, .defstr = "0",
 	  .doc = "seed of rand() and of the choice among variants" },
+	[S_STRETCH] = { .name = "stretch", .type = T_VEC3, .off = S(stretch),
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .def = 1,
+	  .defstr = "[1, 1, 1]",
+	  .doc = "scale the placed structure along x, y and z" },
 	[S_ORGANS] = { .name = "organs", .type = T_RANGES, .sub = &range_table,
 	  .doc = "list of organ entries, each an index range" },
 };

@@ -41,6 +41,19 @@ echo "$model $csv $bytes $N" | awk '{
 echo "== collision model: exact placement, one core"
 "$TESTBIN/bench_collision"
 
+echo "== area model, $N organs on a hemisphere, one core (--info: the model alone)"
+printf 'model = "area";\ncount = %d;\narea = { receptacle = { shape = "hemisphere"; }; };\n' $N >"$OUT/area.cfg"
+# The collision model on the same receptacle, with the radius at which
+# it places the same count (a little under the area model's even radius).
+r=$("$PHYLLO" --info "$OUT/area.cfg" | awk '/^radius:/ { print $2 * 0.93 }')
+printf 'model = "collision";\ncount = %d;\ncollision = { receptacle = { shape = "hemisphere"; }; radius = %s; };\n' $N "$r" >"$OUT/area-coll.cfg"
+ta=$(best "$PHYLLO" --info "$OUT/area.cfg")
+tc=$(best "$PHYLLO" --info "$OUT/area-coll.cfg")
+nc=$("$PHYLLO" --info "$OUT/area-coll.cfg" | sed -n 's/^count: //p')
+echo "$ta $tc $N $nc" | awk '{
+	printf "area model: %.3f s = %.1f M organs/s; collision model, same receptacle: %.3f s for %d = %.2f M/s; ratio %.1fx\n", $1, $3 / $1 / 1e6, $2, $4, $4 / $2 / 1e6, ($2 / $4) / ($1 / $3)
+}'
+
 echo "== POV-Ray include, $N organs"
 pov=$(best "$PHYLLO" --pov -o /dev/null "$OUT/planar.cfg")
 echo "$pov $N" | awk '{ printf "model + include:      %.3f s  = %.2f M organs/s\n", $1, $2 / $1 / 1e6 }'

@@ -341,8 +341,8 @@ presets(void)
 		ends = fmax(hypot(b[0][0] - shapes[i].base[0], b[0][1] -
 		    shapes[i].base[1]), hypot(b[n - 1][0] - shapes[i].tip[0],
 		    b[n - 1][1] - shapes[i].tip[1]));
-		/* Circular arcs as cubic Beziers are within 5e-6 of radius. */
-		check(worst < 5e-6 && worst_c < 5e-6 && ends < 1e-12 &&
+		/* Circular arcs as cubic Beziers are within 2e-11 of radius. */
+		check(worst < 2e-11 && worst_c < 2e-11 && ends < 1e-12 &&
 		    res.count > 20, "preset %s: the curve and %zu centres lie "
 		    "on its closed form (worst %.2g, %.2g), base and tip "
 		    "where the manual says (%.2g)", shape, res.count, worst,
