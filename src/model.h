@@ -42,6 +42,9 @@ enum place {
 	PLACE_BRUTE	/* every earlier primordium at finely spaced t */
 };
 int	collision_place(const struct scene *, struct result *, int how);
+/* The inhibition model; all_pairs: every primordium, no cut-off (bench). */
+int	inhibition_place(const struct scene *, struct result *, int all_pairs);
+
 /* The receptacle a collision scene gave, for the tests. */
 const struct receptacle *collision_receptacle(const struct scene *);
 

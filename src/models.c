@@ -10,13 +10,14 @@
 #include "model.h"
 
 extern const struct model planar_model, cylindrical_model, collision_model,
-    area_model;
+    area_model, inhibition_model;
 
 const struct model *const models[] = {
 	&planar_model,
 	&cylindrical_model,
 	&collision_model,
 	&area_model,
+	&inhibition_model,
 	NULL
 };
 

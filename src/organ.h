@@ -31,6 +31,7 @@ struct info_item {
 	const char	*key;
 	double		 val[6];
 	int		 nval;
+	const char	*text;		/* a word instead of numbers (static) */
 };
 
 #define INFO_MAX 16
@@ -71,5 +72,6 @@ organ_v(const struct organ *o, double v[3])
 void	result_init(struct result *, size_t count);
 void	result_free(struct result *);
 void	result_info(struct result *, const char *key, int nval, ...);
+void	result_info_text(struct result *, const char *key, const char *text);
 
 #endif

@@ -42,8 +42,18 @@ info_write(struct sink *s, const struct result *r)
 		sink_puts(s, r->objects[i]);
 	}
 	sink_putc(s, '\n');
-	for (int i = 0; i < r->ninfo; i++)
-		line(s, r->info[i].key, r->info[i].nval, r->info[i].val);
+	for (int i = 0; i < r->ninfo; i++) {
+		const struct info_item *it = &r->info[i];
+
+		if (it->text == NULL) {
+			line(s, it->key, it->nval, it->val);
+			continue;
+		}
+		sink_puts(s, it->key);
+		sink_puts(s, ": ");
+		sink_puts(s, it->text);
+		sink_putc(s, '\n');
+	}
 	if (r->rays > 0) {
 		/* Spokes instead of spirals: rarely what was meant. */
 		double rays = (double)r->rays;

@@ -39,3 +39,11 @@ result_info(struct result *r, const char *key, int nval, ...)
 		it->val[i] = va_arg(ap, double);
 	va_end(ap);
 }
+
+/* A fact that is a word ("regime: fibonacci"); text must outlive r. */
+void
+result_info_text(struct result *r, const char *key, const char *text)
+{
+	result_info(r, key, 0);
+	r->info[r->ninfo - 1].text = text;
+}

@@ -41,6 +41,9 @@ echo "$model $csv $bytes $N" | awk '{
 echo "== collision model: exact placement, one core"
 "$TESTBIN/bench_collision"
 
+echo "== inhibition model, one core"
+"$TESTBIN/bench_inhibition"
+
 echo "== area model, $N organs on a hemisphere, one core (--info: the model alone)"
 printf 'model = "area";\ncount = %d;\narea = { receptacle = { shape = "hemisphere"; }; };\n' $N >"$OUT/area.cfg"
 # The collision model on the same receptacle, with the radius at which
