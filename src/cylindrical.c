@@ -269,7 +269,8 @@ cylindrical_run(const struct scene *sc, const void *params,
 	free(z);
 
 	cyl_encyclic(p.m, p.n, &dm, &dn);
-	result_info(res, "parastichies", 2, (double)p.m, (double)p.n);
+	/* The lattice asked for; --info measures the contacts too. */
+	result_info(res, "pattern", 2, (double)p.m, (double)p.n);
 	result_info(res, "encyclic", 2, (double)dm, (double)dn);
 	result_info(res, "range", 2, p.lo, p.hi);
 	result_info(res, "rise", 1, p.h);

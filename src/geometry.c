@@ -54,52 +54,6 @@ frame_revolution_cs(struct organ *o, double phi, double c, double s,
 }
 
 /*
- * The opposed pair of contact parastichies through organ k: the index
- * difference to its nearest earlier neighbour, and to the nearest
- * earlier neighbour on the other side (turning the other way about the
- * axis).  Brute force over all earlier organs: it runs once, for --info.
- */
-void
-parastichies(const struct result *r, size_t k, int pair[2])
-{
-	const struct organ *o = r->organs, *ok = &o[k];
-	double best[2] = { HUGE_VAL, HUGE_VAL };
-	size_t jbest[2] = { 0, 0 };
-	int side0 = 0;
-
-	pair[0] = pair[1] = 0;
-	for (int pass = 0; pass < 2; pass++) {
-		for (size_t j = 0; j < k; j++) {
-			double d[3] = { o[j].pos[0] - ok->pos[0],
-			    o[j].pos[1] - ok->pos[1], o[j].pos[2] - ok->pos[2] };
-			double dist = vec_dot(d, d);
-			double turn = ok->pos[0] * o[j].pos[1] -
-			    ok->pos[1] * o[j].pos[0];
-			int side = turn > 0 ? 1 : -1;
-
-			if (pass == 1 && side == side0)
-				continue;
-			if (dist < best[pass]) {
-				best[pass] = dist;
-				jbest[pass] = j;
-				if (pass == 0)
-					side0 = side;
-			}
-		}
-		if (isinf(best[pass]))
-			return;
-	}
-	pair[0] = (int)(k - jbest[0]);
-	pair[1] = (int)(k - jbest[1]);
-	if (pair[0] > pair[1]) {
-		int t = pair[0];
-
-		pair[0] = pair[1];
-		pair[1] = t;
-	}
-}
-
-/*
  * Does a divergence of deg degrees line count organs up on rays?  It
  * does when deg/360 is so near a fraction p/q, with at least three
  * organs to a ray (3q <= count), that organ n + q lands beside organ n

@@ -376,13 +376,18 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	size_t N;
 	double *gaps, mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
-	int pair[2];
 
 	if (!sc->given[S_COUNT]) {
 		scene_error(sc, 1, "missing setting 'count'");
 		return -1;
 	}
 	N = (size_t)sc->count;
+	if (P->kernel == K_GAUSSIAN && N > 200000) {
+		scene_error(sc, GIVEN_AT(P, IN_KERNEL), "count %zu is more "
+		    "than the gaussian kernel places, 200000: it weighs every "
+		    "primordium, so each costs as many as came before", N);
+		return -1;
+	}
 	F.S = xcalloc(N + 1, sizeof(*F.S));
 	gmin = HUGE_VAL;
 	for (size_t n = 1; n <= N; n++) {
@@ -395,7 +400,6 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 		if (P->growth.e != NULL && scene_eval(sc, &P->growth,
 		    "inhibition.growth", "primordium", &env, &g) != 0) {
 			free(F.S);
-	free(F.r);
 			return -1;
 		}
 		if (!(g > 0) || g > 100) {
@@ -403,7 +407,6 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 			    "inhibition.growth is %.9g at primordium %zu; it "
 			    "must be greater than 0 and at most 100", g, n);
 			free(F.S);
-	free(F.r);
 			return -1;
 		}
 		/*
@@ -425,13 +428,6 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 		    "e^%.0f meristem radii out; the sum must stay under %d",
 		    F.S[N - 1], N, F.S[N - 1], AGE_MAX);
 		free(F.S);
-	free(F.r);
-		return -1;
-	}
-	if (P->kernel == K_GAUSSIAN && N > 200000) {
-		scene_error(sc, GIVEN_AT(P, IN_KERNEL), "count %zu is more "
-		    "than the gaussian kernel places, 200000: it weighs every "
-		    "primordium, so each costs as many as came before", N);
 		return -1;
 	}
 	F.phi = xcalloc(N, sizeof(*F.phi));
@@ -503,12 +499,6 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 	}
 	contact_radii(res, F.near);
 	result_info(res, "settled", 2, mean, spread);
-	if (N >= 3) {
-		parastichies(res, N - 1, pair);
-		if (pair[0] > 0)
-			result_info(res, "parastichies", 2, (double)pair[0],
-			    (double)pair[1]);
-	}
 	/* 99.5016: the Lucas angle, 360 / (3 + tau^-1)... of the 1, 3 series. */
 	result_info_text(res, "regime", fabs(mean - 180) < 5 ? "distichous" :
 	    fabs(mean - GOLDEN_ANGLE) < 2 ? "fibonacci" :

@@ -22,6 +22,8 @@ struct model {
 	int		(*run)(const struct scene *, const void *params,
 			    struct result *);
 	enum projection	 svg;
+	int		 rim_last;	/* the rim or base is the last organs
+					   (planar), not the first */
 };
 
 /* Every model, NULL-terminated (models.c). */
@@ -56,9 +58,6 @@ extern void (*model_progress)(long long done, int last);
 
 /* Apply the scene's organs entries to placed organs; 0 or -1. */
 int	organs_apply(const struct scene *, struct result *);
-
-/* The contact parastichy numbers seen from organ k, sorted; 0 if none. */
-void	parastichies(const struct result *, size_t k, int pair[2]);
 
 /*
  * Place an organ on a surface of revolution about Z: at angle phi

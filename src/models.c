@@ -41,6 +41,7 @@ model_run(const struct scene *sc, struct result *res)
 	res->model = sc->model->name;
 	res->seed = sc->seed;
 	res->svg = sc->model->svg;
+	res->rim_last = sc->model->rim_last;
 	res->source = xstrdup(sc->file);
 	res->objects = xcalloc(sc->nobjects, sizeof(*res->objects));
 	for (size_t i = 0; i < sc->nobjects; i++)

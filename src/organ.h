@@ -54,6 +54,7 @@ struct result {
 	const char	*model;		/* the model's name (static) */
 	long long	 seed;
 	enum projection	 svg;		/* the model's preferred view */
+	int		 rim_last;	/* the rim or base: the last organs */
 	long long	 rays, rays_p;	/* the divergence is rays_p/rays of a
 					   turn and lines organs up; or 0 */
 	char		*source;	/* the scene file as named, owned */

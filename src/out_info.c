@@ -1,6 +1,6 @@
 /* out_info.c - "key: value" lines about the result, for people and scripts. */
 #include <math.h>
-
+#include "parastichy.h"
 #include "writer.h"
 
 static void
@@ -11,6 +11,49 @@ line(struct sink *s, const char *key, int n, const double *v)
 	for (int i = 0; i < n; i++) {
 		sink_putc(s, ' ');
 		sink_num(s, v[i]);
+	}
+	sink_putc(s, '\n');
+}
+
+/*
+ * The divergence as a fraction of a turn, by its continued fraction's
+ * convergents p/q (the golden angle: 1/2, 1/3, 2/5, 3/8, 5/13, ...): the
+ * q are the parastichy numbers the divergence can show.  Up to q of the
+ * organ count, at most 16.
+ */
+static void
+convergents(struct sink *s, const struct result *r)
+{
+	double x = fabs(r->divergence) / 360, f;
+	long long h0 = 1, h1, k0 = 0, k1 = 1;
+
+	x -= floor(x);
+	h1 = 0;
+	f = x;
+	sink_puts(s, "convergents:");
+	for (int i = 0; i < 16; i++) {
+		double a;
+		long long h, k;
+
+		if (f < 1e-12)
+			break;
+		f = 1 / f;
+		a = floor(f);
+		f -= a;
+		if (a > 1e12)
+			break;
+		h = (long long)a * h1 + h0;
+		k = (long long)a * k1 + k0;
+		if ((double)k > (double)r->count)
+			break;
+		h0 = h1;
+		h1 = h;
+		k0 = k1;
+		k1 = k;
+		sink_putc(s, ' ');
+		sink_uint(s, (unsigned long long)h);
+		sink_putc(s, '/');
+		sink_uint(s, (unsigned long long)k);
 	}
 	sink_putc(s, '\n');
 }
@@ -54,6 +97,35 @@ info_write(struct sink *s, const struct result *r)
 		sink_puts(s, it->text);
 		sink_putc(s, '\n');
 	}
+	if (r->count >= 3) {
+		/* Measured on the organs as placed, whatever the model. */
+		struct para_zone z[64];
+		size_t nz = para_zones(r, NULL, z, 64);
+
+		if (nz > 0) {
+			const struct para_zone *rim = r->rim_last ?
+			    &z[nz - 1] : &z[0];
+			double mn[2] = { rim->m, rim->n };
+
+			line(s, "parastichies", 2, mn);
+			sink_puts(s, "parastichies-along:");
+			for (size_t k = 0; k < nz; k++) {
+				sink_puts(s, k ? "; " : " ");
+				sink_uint(s, (unsigned long long)z[k].m);
+				sink_putc(s, '/');
+				sink_uint(s, (unsigned long long)z[k].n);
+				sink_puts(s, " from organ ");
+				sink_uint(s, (unsigned long long)z[k].from);
+				sink_puts(s, " (rho ");
+				sink_num(s, z[k].rho);
+				sink_puts(s, ", z ");
+				sink_num(s, z[k].z);
+				sink_putc(s, ')');
+			}
+			sink_putc(s, '\n');
+		}
+	}
+	convergents(s, r);
 	if (r->rays > 0) {
 		/* Spokes instead of spirals: rarely what was meant. */
 		double rays = (double)r->rays;

@@ -109,14 +109,6 @@ planar_run(const struct scene *sc, const void *params, struct result *res)
 	}
 	result_info(res, "scale", 1, c);
 	result_info(res, "outer", 1, rim);
-	if (count >= 3) {
-		int pair[2];
-
-		parastichies(res, count - 1, pair);
-		if (pair[0] > 0)
-			result_info(res, "parastichies", 2, (double)pair[0],
-			    (double)pair[1]);
-	}
 	return 0;
 }
 
@@ -128,4 +120,5 @@ const struct model planar_model = {
 	.size = sizeof(struct planar),
 	.run = planar_run,
 	.svg = PROJ_TOP,
+	.rim_last = 1,
 };

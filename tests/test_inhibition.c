@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "model.h"
+#include "parastichy.h"
 #include "scene.h"
 #include "check.h"
 
@@ -210,8 +211,14 @@ settles(const char *what, const char *cfg, double want, double tol, int fib)
 		    atan2(p->pos[1], p->pos[0]), 2 * M_PI)) * 180 / M_PI;
 	}
 	mean = m / (double)(res.count - res.count / 3);
-	a = (int)info(&res, "parastichies", 0);
-	b = (int)info(&res, "parastichies", 1);
+	/* The contact pair at the meristem: the newest zone, measured. */
+	{
+		struct para_zone z[64];
+		size_t nz = para_zones(&res, NULL, z, 64);
+
+		a = nz ? z[nz - 1].m : 0;
+		b = nz ? z[nz - 1].n : 0;
+	}
 	check(fabs(mean - want) < tol && fabs(info(&res, "settled", 0) - mean) <
 	    1e-6 && (!fib || consecutive_fib(a, b)), "%s: settles at %.4f degrees (want %.4f within %g)%s, "
 	    "parastichies %d and %d", what, mean, want, tol, fib ?

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "model.h"
+#include "parastichy.h"
 #include "numfmt.h"
 #include "scene.h"
 #include "check.h"
@@ -276,11 +277,16 @@ test_parastichies(void)
 		struct scene sc;
 		struct result res;
 		int pair[2] = { 0, 0 };
+		struct para_zone z[64];
+		size_t nz;
 
 		snprintf(text, sizeof(text), "model = \"planar\"; count = %s;",
 		    counts[i]);
-		if (run(text, &sc, &res) == 0)
-			parastichies(&res, res.count - 1, pair);
+		if (run(text, &sc, &res) == 0 &&
+		    (nz = para_zones(&res, NULL, z, 64)) > 0) {
+			pair[0] = z[nz - 1].m;
+			pair[1] = z[nz - 1].n;
+		}
 		check(is_fib_pair(pair[0], pair[1]), "parastichies of %s "
 		    "organs at the golden angle are consecutive Fibonacci "
 		    "numbers (%d, %d)", counts[i], pair[0], pair[1]);

@@ -1,0 +1,307 @@
+/*
+ * parastichy.c - the contact parastichies measured on the organs as
+ * placed, for every model: no formula of the model is used, so they hold
+ * for the collision, area and inhibition models alike.
+ *
+ * At each organ the two nearest earlier neighbours turning either way
+ * about the axis are its contacts; the index differences to them are the pair of
+ * opposed parastichies through it (Vogel's 13 and 21, van Iterson's m
+ * and n).  Along the structure the organs are taken in runs, each run's
+ * most common pair is its pair, and runs with the same pair join into
+ * zones: 34/55, then 21/34, then 13/21 up a coneflower.
+ *
+ * Neighbours come from a k-d tree, because organ sizes may differ by
+ * orders of magnitude (the inhibition model's grown radii) where a grid
+ * of one cell size would not do.  Written here: Debian has no small C
+ * library for it, and it is a hundred lines.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mem.h"
+#include "parastichy.h"
+
+#define K	8	/* neighbours looked at: a lattice point has 6 */
+#define RUNS	48	/* runs the structure is cut into for the zones */
+#define SAMPLE	2048	/* organs measured in a run at most */
+
+struct kd {
+	const struct organ *o;
+	size_t		*ix;	/* organ indices, in tree order */
+	unsigned char	*axis;	/* at a node's middle: the axis it splits */
+};
+
+static double
+coord(const struct kd *T, size_t k, int axis)
+{
+	return T->o[T->ix[k]].pos[axis];
+}
+
+/* Quickselect: the median of ix[lo..hi) on axis goes to mid. */
+static void
+select_median(struct kd *T, size_t lo, size_t hi, size_t mid, int axis)
+{
+	while (hi - lo > 1) {
+		double pivot = coord(T, lo + (hi - lo) / 2, axis);
+		size_t i = lo, j = hi - 1;
+
+		while (i <= j) {
+			while (coord(T, i, axis) < pivot)
+				i++;
+			while (coord(T, j, axis) > pivot)
+				j--;
+			if (i <= j) {
+				size_t t = T->ix[i];
+
+				T->ix[i] = T->ix[j];
+				T->ix[j] = t;
+				i++;
+				if (j == 0)
+					break;
+				j--;
+			}
+		}
+		if (mid <= j)
+			hi = j + 1;
+		else if (mid >= i)
+			lo = i;
+		else
+			return;
+	}
+}
+
+/*
+ * Build over ix[lo..hi): the median on the axis of widest spread at its
+ * middle (a flat head has no spread in z: splitting there would make
+ * every search look on both sides).
+ */
+static void
+build(struct kd *T, size_t lo, size_t hi)
+{
+	size_t mid = lo + (hi - lo) / 2;
+	double mn[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+	double mx[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+	int axis = 0;
+
+	if (hi - lo <= 1) {
+		if (hi > lo)
+			T->axis[lo] = 0;
+		return;
+	}
+	for (size_t k = lo; k < hi; k++)
+		for (int a = 0; a < 3; a++) {
+			double v = coord(T, k, a);
+
+			mn[a] = v < mn[a] ? v : mn[a];
+			mx[a] = v > mx[a] ? v : mx[a];
+		}
+	for (int a = 1; a < 3; a++)
+		if (mx[a] - mn[a] > mx[axis] - mn[axis])
+			axis = a;
+	T->axis[mid] = (unsigned char)axis;
+	select_median(T, lo, hi, mid, axis);
+	build(T, lo, mid);
+	build(T, mid + 1, hi);
+}
+
+/* The K nearest, kept sorted by distance. */
+struct near {
+	size_t	 j[K];
+	double	 d2[K];
+	int	 n;
+};
+
+static void
+near_add(struct near *nb, size_t j, double d2)
+{
+	int k;
+
+	if (nb->n == K) {
+		if (d2 >= nb->d2[K - 1])
+			return;
+		k = K - 1;
+	} else
+		k = nb->n++;
+	while (k > 0 && nb->d2[k - 1] > d2) {
+		nb->d2[k] = nb->d2[k - 1];
+		nb->j[k] = nb->j[k - 1];
+		k--;
+	}
+	nb->d2[k] = d2;
+	nb->j[k] = j;
+}
+
+static void
+query(const struct kd *T, size_t lo, size_t hi, const double p[3],
+    size_t self, struct near *nb)
+{
+	size_t mid;
+	const double *q;
+	double d2 = 0, diff;
+	int axis;
+
+	if (hi <= lo)
+		return;
+	mid = lo + (hi - lo) / 2;
+	axis = T->axis[mid];
+	q = T->o[T->ix[mid]].pos;
+	for (int a = 0; a < 3; a++)
+		d2 += (q[a] - p[a]) * (q[a] - p[a]);
+	if (T->ix[mid] != self)
+		near_add(nb, T->ix[mid], d2);
+	diff = p[axis] - q[axis];
+	if (diff < 0) {
+		query(T, lo, mid, p, self, nb);
+		if (nb->n < K || diff * diff < nb->d2[nb->n - 1])
+			query(T, mid + 1, hi, p, self, nb);
+	} else {
+		query(T, mid + 1, hi, p, self, nb);
+		if (nb->n < K || diff * diff < nb->d2[nb->n - 1])
+			query(T, lo, mid, p, self, nb);
+	}
+}
+
+static void
+kd_init(struct kd *T, const struct result *r)
+{
+	T->o = r->organs;
+	T->ix = xcalloc(r->count, sizeof(size_t));
+	T->axis = xcalloc(r->count, 1);
+	for (size_t i = 0; i < r->count; i++)
+		T->ix[i] = i;
+	build(T, 0, r->count);
+}
+
+static void
+kd_free(struct kd *T)
+{
+	free(T->ix);
+	free(T->axis);
+}
+
+/* Organ i's pair, from the tree. */
+static void
+pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
+{
+	const struct organ *o = &r->organs[i];
+	struct near nb = { .n = 0 };
+	long long side[2] = { -1, -1 };
+
+	pair[0] = pair[1] = 0;
+	/* On the axis no organ turns either way. */
+	if (hypot(o->pos[0], o->pos[1]) < 1e-9 * (o->radius + 1e-300))
+		return;
+	query(T, 0, r->count, o->pos, i, &nb);
+	/*
+	 * Earlier neighbours only: a parastichy through i has a neighbour
+	 * on either side of it, i - m one way and i + m the other, so only
+	 * the earlier ones tell the two families apart.  The side is the
+	 * sign of the turn from i to the neighbour about the axis.
+	 */
+	for (int k = 0; k < nb.n; k++) {
+		const struct organ *q = &r->organs[nb.j[k]];
+		int s = o->pos[0] * q->pos[1] - o->pos[1] * q->pos[0] > 0;
+
+		if (nb.j[k] < i && side[s] < 0)
+			side[s] = (long long)nb.j[k];
+	}
+	if (side[0] < 0 || side[1] < 0)
+		return;
+	for (int s = 0; s < 2; s++)
+		pair[s] = (int)((long long)i - side[s]);
+	if (pair[0] > pair[1]) {
+		int t = pair[0];
+
+		pair[0] = pair[1];
+		pair[1] = t;
+	}
+}
+
+void
+para_pairs(const struct result *r, int (*pair)[2])
+{
+	struct kd T;
+
+	kd_init(&T, r);
+	/* In tree order: neighbours in space are then neighbours in memory. */
+	for (size_t t = 0; t < r->count; t++)
+		pair_at(&T, r, T.ix[t], pair[T.ix[t]]);
+	kd_free(&T);
+}
+
+/* The most common pair among pair[from..to), or 0 0. */
+static void
+modal(const int (*pair)[2], size_t from, size_t to, int out[2])
+{
+	int best = 0;
+
+	out[0] = out[1] = 0;
+	/* Runs are short: count each distinct pair by scanning. */
+	for (size_t i = from; i < to; i++) {
+		int c = 0;
+
+		if (pair[i][0] == 0)
+			continue;
+		if (i > from && pair[i][0] == pair[i - 1][0] &&
+		    pair[i][1] == pair[i - 1][1])
+			continue;
+		for (size_t j = from; j < to; j++)
+			c += pair[j][0] == pair[i][0] && pair[j][1] == pair[i][1];
+		if (c > best) {
+			best = c;
+			out[0] = pair[i][0];
+			out[1] = pair[i][1];
+		}
+	}
+}
+
+size_t
+para_zones(const struct result *r, const int (*pair)[2], struct para_zone *z,
+    size_t zmax)
+{
+	size_t N = r->count, runs = N < RUNS * 8 ? (N + 7) / 8 : RUNS, nz = 0;
+	struct kd T = { 0 };
+	int (*s)[2] = xcalloc(SAMPLE, sizeof(*s));
+
+	if (pair == NULL)
+		kd_init(&T, r);
+	for (size_t k = 0; k < runs && N > 0; k++) {
+		size_t from = N * k / runs, to = N * (k + 1) / runs;
+		size_t step = to - from > SAMPLE ? (to - from) / SAMPLE : 1, n = 0;
+		int m[2];
+
+		/* The modal pair of an even sample of a long run is its own. */
+		for (size_t i = from; i < to && n < SAMPLE; i += step, n++)
+			if (pair != NULL)
+				memcpy(s[n], pair[i], sizeof(s[0]));
+			else
+				pair_at(&T, r, i, s[n]);
+		modal((const int (*)[2])s, 0, n, m);
+		if (m[0] == 0)
+			continue;
+		if (nz > 0 && z[nz - 1].m == m[0] && z[nz - 1].n == m[1])
+			continue;
+		if (nz == zmax)
+			break;
+		z[nz].from = (long long)from;
+		z[nz].m = m[0];
+		z[nz].n = m[1];
+		z[nz].rho = hypot(r->organs[from].pos[0], r->organs[from].pos[1]);
+		z[nz].z = r->organs[from].pos[2];
+		nz++;
+	}
+	/*
+	 * The first organs have too few earlier ones to show their true
+	 * contacts: a zone that ends before about 1.5 n of the next zone's
+	 * pair is their artefact, not a pattern.
+	 */
+	while (nz > 1 && (double)z[1].from <= 1.5 * z[1].n) {
+		memmove(z, z + 1, (nz - 1) * sizeof(*z));
+		nz--;
+	}
+	free(s);
+	if (pair == NULL)
+		kd_free(&T);
+	return nz;
+}

@@ -1,0 +1,222 @@
+/*
+ * test_parastichy.c - the measured parastichies against what is known
+ * independently of the measuring code:
+ *  - Vogel's pattern: the rim pair equals the pair found by brute force
+ *    over the closed form r = c sqrt(n), theta = n alpha, computed here;
+ *  - van Iterson's pairs (ABOP Table 4.1's (m, n)) come back from the
+ *    cylindrical model's output;
+ *  - on a collision structure, the zones along it equal those from a
+ *    brute-force search of every earlier organ.
+ * Prints "ok"/"not ok" lines.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model.h"
+#include "parastichy.h"
+#include "scene.h"
+#include "check.h"
+
+static int
+run(const char *text, struct scene *sc, struct result *res)
+{
+	*res = (struct result){0};
+	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
+		return -1;
+	return model_run(sc, res);
+}
+
+/* Brute force: organ i's nearest earlier neighbour turning either way. */
+static void
+brute_pair(const double (*p)[3], size_t i, int pair[2])
+{
+	double best[2] = { HUGE_VAL, HUGE_VAL }, phi = atan2(p[i][1], p[i][0]);
+	long long who[2] = { -1, -1 };
+
+	pair[0] = pair[1] = 0;
+	for (size_t j = 0; j < i; j++) {
+		double d = 0;
+		int s = remainder(atan2(p[j][1], p[j][0]) - phi, 2 * M_PI) > 0;
+
+		for (int a = 0; a < 3; a++)
+			d += (p[j][a] - p[i][a]) * (p[j][a] - p[i][a]);
+		if (d < best[s]) {
+			best[s] = d;
+			who[s] = (long long)j;
+		}
+	}
+	if (who[0] < 0 || who[1] < 0)
+		return;
+	pair[0] = (int)((long long)i - who[0]);
+	pair[1] = (int)((long long)i - who[1]);
+	if (pair[0] > pair[1]) {
+		int t = pair[0];
+
+		pair[0] = pair[1];
+		pair[1] = t;
+	}
+}
+
+static void
+vogel(void)
+{
+	static const int counts[] = { 150, 600, 2500, 9000 };
+
+	for (size_t k = 0; k < sizeof(counts) / sizeof(counts[0]); k++) {
+		int N = counts[k], (*pair)[2], best = 0, want[2] = { 0, 0 };
+		char text[128];
+		struct scene sc;
+		struct result res;
+		struct para_zone z[64];
+		size_t nz, from = (size_t)N - (size_t)N / 48;
+		double (*p)[3] = calloc((size_t)N, sizeof(*p));
+
+		/* Vogel's formula, computed here. */
+		for (int n = 0; n < N; n++) {
+			double a = n * GOLDEN_ANGLE * M_PI / 180, r = sqrt(n);
+
+			p[n][0] = r * cos(a);
+			p[n][1] = r * sin(a);
+			p[n][2] = 0;
+		}
+		/* The most common brute-force pair in the last 48th. */
+		{
+			int (*bp)[2] = calloc((size_t)N, sizeof(*bp));
+
+			for (size_t i = from; i < (size_t)N; i++)
+				brute_pair((const double (*)[3])p, i, bp[i]);
+			for (size_t i = from; i < (size_t)N; i++) {
+				int c = 0;
+
+				for (size_t j = from; j < (size_t)N; j++)
+					c += bp[j][0] == bp[i][0] &&
+					    bp[j][1] == bp[i][1];
+				if (c > best) {
+					best = c;
+					want[0] = bp[i][0];
+					want[1] = bp[i][1];
+				}
+			}
+			free(bp);
+		}
+		snprintf(text, sizeof(text), "model = \"planar\"; count = %d;",
+		    N);
+		if (run(text, &sc, &res) != 0) {
+			check(0, "Vogel %d: runs", N);
+			scene_free(&sc);
+			free(p);
+			continue;
+		}
+		pair = calloc(res.count, sizeof(*pair));
+		para_pairs(&res, pair);
+		nz = para_zones(&res, (const int (*)[2])pair, z, 64);
+		check(nz > 0 && z[nz - 1].m == want[0] && z[nz - 1].n == want[1],
+		    "Vogel, %d organs: the rim pair measured is %d, %d; by brute "
+		    "force on the closed form %d, %d", N, nz ? z[nz - 1].m : 0,
+		    nz ? z[nz - 1].n : 0, want[0], want[1]);
+		free(pair);
+		free(p);
+		result_free(&res);
+		scene_free(&sc);
+	}
+}
+
+static void
+van_iterson(void)
+{
+	static const int pairs[][2] = { { 1, 2 }, { 2, 3 }, { 3, 5 }, { 5, 8 },
+	    { 8, 13 }, { 1, 3 }, { 3, 4 }, { 2, 5 }, { 4, 7 }, { 3, 8 },
+	    { 5, 7 }, { 2, 7 } };
+	int bad = 0;
+	char msg[256] = "";
+
+	for (size_t k = 0; k < sizeof(pairs) / sizeof(pairs[0]); k++) {
+		char text[160];
+		struct scene sc;
+		struct result res;
+		struct para_zone z[64];
+		int (*pair)[2];
+		size_t nz;
+
+		snprintf(text, sizeof(text), "model = \"cylindrical\"; count = "
+		    "600; cylindrical = { parastichies = [%d, %d]; };",
+		    pairs[k][0], pairs[k][1]);
+		if (run(text, &sc, &res) != 0) {
+			bad++;
+			scene_free(&sc);
+			continue;
+		}
+		pair = calloc(res.count, sizeof(*pair));
+		para_pairs(&res, pair);
+		nz = para_zones(&res, (const int (*)[2])pair, z, 64);
+		/* A cylinder holds one pattern from base to top. */
+		if (nz != 1 || z[0].m != pairs[k][0] || z[0].n != pairs[k][1]) {
+			bad++;
+			snprintf(msg + strlen(msg), sizeof(msg) - strlen(msg),
+			    " (%d, %d) measured %d, %d in %zu zones;",
+			    pairs[k][0], pairs[k][1], nz ? z[0].m : 0,
+			    nz ? z[0].n : 0, nz);
+		}
+		free(pair);
+		result_free(&res);
+		scene_free(&sc);
+	}
+	check(bad == 0, "van Iterson: %zu of ABOP Table 4.1's pairs measured "
+	    "back from the cylindrical model's output, one zone each%s",
+	    sizeof(pairs) / sizeof(pairs[0]), msg);
+}
+
+static void
+collision_zones(void)
+{
+	static const char text[] = "model = \"collision\"; collision = { "
+	    "receptacle = { profile = ((1, 0), (0.8, 0.5), (0.35, 1.1), "
+	    "(0, 1.2)); }; radius = \"max(0.02, 0.045 - 0.00003 * n)\"; "
+	    "epsilon = \"r\"; };";
+	struct scene sc;
+	struct result res, copy;
+	struct para_zone z[64], bz[64];
+	int (*pair)[2], (*bp)[2];
+	double (*p)[3];
+	size_t nz, nb, same = 1;
+
+	if (run(text, &sc, &res) != 0) {
+		check(0, "collision zones: runs");
+		scene_free(&sc);
+		return;
+	}
+	pair = calloc(res.count, sizeof(*pair));
+	bp = calloc(res.count, sizeof(*bp));
+	p = calloc(res.count, sizeof(*p));
+	for (size_t i = 0; i < res.count; i++)
+		memcpy(p[i], res.organs[i].pos, sizeof(p[i]));
+	para_pairs(&res, pair);
+	for (size_t i = 0; i < res.count; i++)
+		brute_pair((const double (*)[3])p, i, bp[i]);
+	nz = para_zones(&res, (const int (*)[2])pair, z, 64);
+	copy = res;
+	nb = para_zones(&copy, (const int (*)[2])bp, bz, 64);
+	for (size_t k = 0; k < nz && k < nb; k++)
+		same &= z[k].m == bz[k].m && z[k].n == bz[k].n &&
+		    z[k].from == bz[k].from;
+	check(nz == nb && same && nz >= 3, "coneflower (collision): %zu zones "
+	    "along, the same as by brute force over every earlier organ "
+	    "(%zu), base %d/%d", nz, nb, nz ? z[0].m : 0, nz ? z[0].n : 0);
+	free(pair);
+	free(bp);
+	free(p);
+	result_free(&res);
+	scene_free(&sc);
+}
+
+int
+main(void)
+{
+	check_topic = "parastichies: ";
+	vogel();
+	van_iterson();
+	collision_zones();
+	return check_failures != 0;
+}
