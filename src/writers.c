@@ -11,7 +11,7 @@ const struct writer writers[] = {
 	{ "csv", csv_write, NULL, NULL, 0, NULL, NULL,
 	  "one line per organ: position, frame, scale" },
 	{ "svg", svg_write, NULL, NULL, 0, NULL, NULL,
-	  "a picture: a circle per organ, from above or unrolled" },
+	  "a picture: organs, their parastichies, from above or unrolled" },
 	{ "info", info_write, NULL, NULL, 0, NULL, NULL,
 	  "key: value facts about the result" },
 	{ NULL, NULL, NULL, NULL, 0, NULL, NULL, NULL }

@@ -57,3 +57,19 @@ assert "140-259 Petal" 'objects $OUT/zinnia.csv 140 259 Petal'
 assert "scale grows" 'awk -F, "NR > 1 && \$1 >= 141 && \$15 <= prev { exit 1 } NR > 1 && \$1 >= 140 { prev = \$15 }" $OUT/zinnia.csv'
 assert "u flattens: its z falls" 'awk -F, "NR > 1 && \$1 >= 141 && \$8 >= prev { exit 1 } NR > 1 && \$1 >= 140 { prev = \$8 }" $OUT/zinnia.csv'
 end
+
+# The SVG draws the measured families: two paths a zone, and the legend
+# names the pair --info measures; a tall cone is unrolled, a head not.
+for s in pinecone sunflower; do
+	px --svg "scenes/$s.cfg" >"$OUT/$s.svg"
+	pair=$(px --info "scenes/$s.cfg" | sed -n 's/^parastichies: //p' | sed 's/ / and /')
+	zones=$(px --info "scenes/$s.cfg" | sed -n 's/^parastichies-along: //p' | tr ';' '\n' | wc -l)
+	try "$s: the SVG draws both parastichy families of each of its $zones zones and names the pair ($pair)" true
+	assert "two paths a zone" '[ $(grep -c "^<path " $OUT/$s.svg) -eq $((2 * zones)) ]'
+	assert "the legend names the pair" 'grep -q ">parastichies $pair at the" $OUT/$s.svg'
+	end
+done
+try "a tall cone is unrolled, a flat head seen from above" true
+assert "pinecone unrolled" 'grep -q "cylindrical model, [0-9]* organs, unrolled" $OUT/pinecone.svg'
+assert "sunflower from above" 'grep -q "planar model, [0-9]* organs, from above" $OUT/sunflower.svg'
+end
