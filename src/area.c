@@ -21,15 +21,17 @@
 #include "diag.h"
 #include "mem.h"
 #include "model.h"
+#include "parastichy.h"
 #include "receptacle.h"
 
-enum { AR_RECEPTACLE, AR_RADIUS, AR__N };
+enum { AR_RECEPTACLE, AR_RADIUS, AR_PARASTICHIES, AR__N };
 
 struct area {
 	struct group_at	 at;
 	int		 given[AR__N];
 	struct receptacle receptacle;
 	struct expr_setting radius;	/* of organ n, or not given */
+	struct int_list	 parastichies;	/* instead of radius: the pair wanted */
 };
 
 #define A(f)	offsetof(struct area, f)
@@ -42,6 +44,10 @@ static const struct row area_rows[] = {
 	  .defstr = "none",
 	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
 	  .doc = "radius of organ n; its hexagonal cell's area is its share" },
+	[AR_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
+	  .off = A(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
+	  .doc = "instead of radius: the contact pair [m, n] wanted at the "
+	  "base" },
 };
 
 static const struct table area_table = TABLE(area_rows, struct area);
@@ -57,15 +63,18 @@ struct share {
 /* Radius mode: organ after organ until the next cell would not fit. */
 static struct share *
 shares_by_radius(const struct scene *sc, const struct area *P,
-    double total, size_t *count)
+    double total, double rconst, long long most, size_t *count)
 {
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_MAX;
+	int capped = sc->given[S_COUNT] || most > 0;
 	size_t n = 0, cap = 4096;
 	struct share *sh = xcalloc(cap, sizeof(*sh));
 	double used = 0;
 
-	if (!sc->given[S_COUNT] && (expr_vars(P->radius.e) &
+	if (most > 0 && most < N)
+		N = most;
+	if (rconst <= 0 && !sc->given[S_COUNT] && (expr_vars(P->radius.e) &
 	    (EXPR_VAR(V_COUNT) | EXPR_VAR(V_T)))) {
 		scene_error(sc, P->radius.line, "area.radius uses N or t, "
 		    "which need count: without it the surface decides how "
@@ -77,8 +86,11 @@ shares_by_radius(const struct scene *sc, const struct area *P,
 		double r0;
 
 		/* A constant radius: the count is known before the loop. */
-		if (!sc->given[S_COUNT] && expr_is_constant(P->radius.e, &r0) &&
-		    r0 > 0 && total / CELL(r0) > COUNT_MAX) {
+		if (rconst > 0)
+			r0 = rconst;
+		else if (!expr_is_constant(P->radius.e, &r0))
+			r0 = 0;
+		if (!capped && r0 > 0 && total / CELL(r0) > COUNT_MAX) {
 			scene_error(sc, P->radius.line, "area.radius %.9g is so "
 			    "small that the receptacle holds more than %d "
 			    "organs; make it larger or set count", r0,
@@ -91,7 +103,7 @@ shares_by_radius(const struct scene *sc, const struct area *P,
 		double r, cell;
 
 		if ((long long)n == N) {
-			if (sc->given[S_COUNT])
+			if (capped)
 				break;
 			scene_error(sc, P->radius.line, "area.radius is so "
 			    "small that the receptacle holds more than %d "
@@ -103,7 +115,9 @@ shares_by_radius(const struct scene *sc, const struct area *P,
 		env.var[V_N] = (double)n;
 		env.var[V_COUNT] = (double)N;
 		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
-		if (scene_eval(sc, &P->radius, "area.radius", "organ", &env,
+		if (rconst > 0)
+			r = rconst;
+		else if (scene_eval(sc, &P->radius, "area.radius", "organ", &env,
 		    &r) != 0) {
 			free(sh);
 			return NULL;
@@ -156,16 +170,16 @@ place(const struct curve *cv, double a, size_t *hint, double phi,
 }
 
 static int
-area_run(const struct scene *sc, const void *params, struct result *res)
+place_area(const struct scene *sc, const struct area *P, struct result *res,
+    double rconst, long long cap)
 {
-	const struct area *P = params;
 	struct curve cv;
 	struct share *sh = NULL;
 	double (*pts)[2], rmin = HUGE_VAL, rmax = 0, r_even = 0;
 	size_t count = 0, hint = 0;
 	int npts;
 
-	if (!P->given[AR_RADIUS] && !sc->given[S_COUNT]) {
+	if (!P->given[AR_RADIUS] && rconst <= 0 && !sc->given[S_COUNT]) {
 		scene_error(sc, GIVEN_AT(P, AR_RADIUS), "give count (organs "
 		    "spread evenly), area.radius (each organ's own size), or "
 		    "both");
@@ -187,8 +201,9 @@ area_run(const struct scene *sc, const void *params, struct result *res)
 		curve_free(&cv);
 		return -1;
 	}
-	if (P->given[AR_RADIUS]) {
-		if ((sh = shares_by_radius(sc, P, cv.area, &count)) == NULL) {
+	if (P->given[AR_RADIUS] || rconst > 0) {
+		if ((sh = shares_by_radius(sc, P, cv.area, rconst, cap,
+		    &count)) == NULL) {
 			curve_free(&cv);
 			return -1;
 		}
@@ -221,6 +236,89 @@ area_run(const struct scene *sc, const void *params, struct result *res)
 	free(sh);
 	curve_free(&cv);
 	return 0;
+}
+
+/* Inverse design: the base pair of a trial radius, on a few organs. */
+struct trial {
+	const struct scene *sc;
+	const struct area *P;
+	long long	 cap;
+};
+
+static int
+trial_pair(void *ctx, double r, int pair[2])
+{
+	const struct trial *T = ctx;
+	struct result res = { 0 };
+	struct para_zone z[64];
+	size_t nz;
+
+	if (place_area(T->sc, T->P, &res, r, T->cap) != 0)
+		return -1;
+	nz = para_zones(&res, NULL, z, 64);
+	pair[0] = nz ? z[0].m : 0;
+	pair[1] = nz ? z[0].n : 0;
+	result_free(&res);
+	return 0;
+}
+
+static int
+area_run(const struct scene *sc, const void *params, struct result *res)
+{
+	const struct area *P = params;
+	const struct int_list *want = &P->parastichies;
+	int at = P->given[AR_PARASTICHIES];
+	double (*pts)[2], rim, rhi, r;
+	char reach[512];
+	int npts;
+
+	if (!at)
+		return place_area(sc, P, res, 0, 0);
+	if (P->given[AR_RADIUS]) {
+		scene_error(sc, at, "give area.radius or area.parastichies, "
+		    "not both");
+		return -1;
+	}
+	if (para_want_check(sc, at, "area.parastichies", want) != 0)
+		return -1;
+	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
+		return -1;
+	rim = pts[0][0];
+	{
+		struct curve cv;
+
+		/* At most a radius whose cell fits four times. */
+		if (curve_init(&cv, (const double (*)[2])pts, npts) == 0) {
+			rhi = fmin(rim * M_PI / 3, sqrt(cv.area / (8 *
+			    sqrt(3.0))));
+			curve_free(&cv);
+		} else
+			rhi = rim * M_PI / 3;
+	}
+	free(pts);
+	if (!(rim > 0)) {
+		/* At a pole the pair changes organ by organ: no base pair. */
+		scene_error(sc, at, "parastichies = [m, n] needs a receptacle "
+		    "with a rim at its base: at a pole the pair changes from "
+		    "one organ to the next");
+		return -1;
+	}
+	{
+		struct trial T = { sc, P, 40LL * (want->v[0] + want->v[1]) };
+
+		r = para_search(want->v, rhi / 200, rhi, 0, trial_pair, &T,
+		    reach, sizeof(reach));
+	}
+	if (r < 0)
+		return -1;
+	if (r == 0) {
+		scene_error(sc, at, "no constant radius shows parastichies "
+		    "%d/%d at the base of this receptacle; the radii tried "
+		    "show %s", want->v[0], want->v[1], reach);
+		return -1;
+	}
+	/* --info's radius line is the one chosen. */
+	return place_area(sc, P, res, r, 0);
 }
 
 const struct model area_model = {

@@ -27,6 +27,7 @@
 #include "diag.h"
 #include "mem.h"
 #include "model.h"
+#include "parastichy.h"
 #include "receptacle.h"
 
 #define COUNT_DEFAULT	1000000	/* primordia when count is not given */
@@ -35,7 +36,7 @@
 
 void	(*model_progress)(long long done, int last);
 
-enum { CO_RECEPTACLE, CO_RADIUS, CO_EPSILON, CO__N };
+enum { CO_RECEPTACLE, CO_RADIUS, CO_EPSILON, CO_PARASTICHIES, CO__N };
 
 struct collision {
 	struct group_at	 at;
@@ -43,6 +44,7 @@ struct collision {
 	struct receptacle receptacle;
 	struct expr_setting radius;	/* of primordium n */
 	struct expr_setting epsilon;	/* how far t may fall back */
+	struct int_list	 parastichies;	/* instead of radius: the pair wanted */
 };
 
 #define CO(f)	offsetof(struct collision, f)
@@ -61,6 +63,10 @@ static const struct row collision_rows[] = {
 	  EXPR_VAR(V_R),
 	  .doc = "arc length t may fall back below the last primordium; "
 	  "\"r\": its radius" },
+	[CO_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
+	  .off = CO(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
+	  .doc = "instead of radius: the contact pair [m, n] wanted at the "
+	  "base" },
 };
 
 static const struct table collision_table = TABLE(collision_rows,
@@ -79,6 +85,7 @@ struct slot {
 struct coll {
 	const struct scene *sc;
 	const struct collision *p;
+	double		 rconst;	/* > 0: the radius, not P->radius */
 	struct curve	 cv;
 	struct prim	*pr;
 	size_t		 n, cap;
@@ -437,7 +444,9 @@ radius_at(const struct coll *C, struct expr_env *env, long long n,
 	env->var[V_N] = (double)n;
 	env->var[V_COUNT] = (double)N;
 	env->var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
-	if (scene_eval(sc, &P->radius, "collision.radius", "primordium",
+	if (C->rconst > 0)
+		*r = C->rconst;
+	else if (scene_eval(sc, &P->radius, "collision.radius", "primordium",
 	    env, r) != 0)
 		return -1;
 	if (!(*r > 0)) {
@@ -526,25 +535,32 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 	}
 }
 
-int
-collision_place(const struct scene *sc, struct result *res, int how)
+/* Placement with radius rconst if > 0, at most cap primordia if > 0. */
+static int
+place(const struct scene *sc, struct result *res, int how, double rconst,
+    long long cap)
 {
 	int brute = how == PLACE_BRUTE;
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	const struct collision *P = sc->params;
-	struct coll C = { .sc = sc, .p = P, .nocover = how != PLACE_EXACT };
+	struct coll C = { .sc = sc, .p = P, .nocover = how != PLACE_EXACT,
+	    .rconst = rconst };
 	double (*pts)[2], alpha = sc->divergence, r, eps;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
+
+	if (cap > 0 && cap < N)
+		N = cap;
 
 	if (N > COUNT_MOST) {
 		scene_error(sc, sc->given[S_COUNT], "count %lld is more than "
 		    "the collision model places, %d", N, COUNT_MOST);
 		return -1;
 	}
-	if (P->radius.e == NULL) {
+	if (P->radius.e == NULL && rconst <= 0) {
 		scene_error(sc, GIVEN_AT(P, CO_RADIUS), "missing setting "
-		    "'collision.radius' (the primordia's radius)");
+		    "'collision.radius' (the primordia's radius, or "
+		    "collision.parastichies to have it found)");
 		return -1;
 	}
 	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
@@ -590,7 +606,7 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	full = (long long)C.n == N;
 	if (model_progress != NULL)
 		model_progress((long long)C.n, 1);
-	if (full && !sc->given[S_COUNT])
+	if (full && !sc->given[S_COUNT] && cap <= 0)
 		diag(ST_OK, sc->file, P->radius.line, 0, "stopped at %d "
 		    "primordia, the default bound, with room left on the "
 		    "receptacle; set count to place more", COUNT_DEFAULT);
@@ -613,11 +629,84 @@ collision_receptacle(const struct scene *sc)
 	return &((const struct collision *)sc->params)->receptacle;
 }
 
+int
+collision_place(const struct scene *sc, struct result *res, int how)
+{
+	return place(sc, res, how, 0, 0);
+}
+
+/* Inverse design: the base pair of a trial radius, on a few primordia. */
+struct trial {
+	const struct scene *sc;
+	long long	 cap;
+};
+
+static int
+trial_pair(void *ctx, double r, int pair[2])
+{
+	const struct trial *T = ctx;
+	struct result res = { 0 };
+	struct para_zone z[64];
+	size_t nz;
+
+	if (place(T->sc, &res, PLACE_EXACT, r, T->cap) != 0)
+		return -1;
+	nz = para_zones(&res, NULL, z, 64);
+	pair[0] = nz ? z[0].m : 0;
+	pair[1] = nz ? z[0].n : 0;
+	result_free(&res);
+	return 0;
+}
+
 static int
 collision_run(const struct scene *sc, const void *params, struct result *res)
 {
-	(void)params;		/* collision_place finds them in sc */
-	return collision_place(sc, res, PLACE_EXACT);
+	const struct collision *P = params;
+	const struct int_list *want = &P->parastichies;
+	int at = P->given[CO_PARASTICHIES];
+	double (*pts)[2], rim, r;
+	char reach[512];
+	int npts;
+
+	if (!at)
+		return collision_place(sc, res, PLACE_EXACT);
+	if (P->given[CO_RADIUS]) {
+		scene_error(sc, at, "give collision.radius or "
+		    "collision.parastichies, not both");
+		return -1;
+	}
+	if (para_want_check(sc, at, "collision.parastichies", want) != 0)
+		return -1;
+	/* From a few around the base to 1/200 of that. */
+	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
+		return -1;
+	rim = pts[0][0];
+	free(pts);
+	if (!(rim > 0)) {
+		/* At a pole the pair changes organ by organ: no base pair. */
+		scene_error(sc, at, "parastichies = [m, n] needs a receptacle "
+		    "with a rim at its base: at a pole the pair changes from "
+		    "one organ to the next");
+		return -1;
+	}
+	{
+		struct trial T = { sc, 40LL * (want->v[0] + want->v[1]) };
+
+		r = para_search(want->v, rim * M_PI / 600, rim * M_PI / 3, 0,
+		    trial_pair, &T, reach, sizeof(reach));
+	}
+	if (r < 0)
+		return -1;
+	if (r == 0) {
+		scene_error(sc, at, "no constant radius shows parastichies "
+		    "%d/%d at the base of this receptacle; the radii tried "
+		    "show %s", want->v[0], want->v[1], reach);
+		return -1;
+	}
+	if (place(sc, res, PLACE_EXACT, r, 0) != 0)
+		return -1;
+	result_info(res, "radius", 1, r);
+	return 0;
 }
 
 const struct model collision_model = {

@@ -28,4 +28,25 @@ void	para_pairs(const struct result *, int (*pair)[2]);
 size_t	para_zones(const struct result *, const int (*pair)[2],
 	    struct para_zone *, size_t zmax);
 
+/* Measure the pair at the rim or base with the parameter at x; 0 or -1. */
+typedef int para_measure_fn(void *ctx, double x, int pair[2]);
+
+/*
+ * Inverse design: the x in [lo, hi] (lo > 0) whose structure shows the
+ * pair want, searched in log x: stepped to find where want shows, then
+ * each edge of that stretch bracketed, and the geometric middle taken.
+ * grows: the pair grows with x (a count) rather than shrinks (a radius).
+ * Returns x, 0 when want does not show (reach then lists the pairs that
+ * did, "2/3 3/5 5/8"), or -1 when measure failed (it said why).
+ */
+double	para_search(const int want[2], double lo, double hi, int grows,
+	    para_measure_fn *, void *ctx, char *reach, size_t reachsz);
+
+struct scene;
+struct int_list;
+
+/* A pair asked for at path, given at line: [m, n], 0 < m < n, coprime. */
+int	para_want_check(const struct scene *, int line, const char *path,
+	    const struct int_list *);
+
 #endif

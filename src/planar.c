@@ -8,8 +8,10 @@
 #include <stddef.h>
 
 #include "model.h"
+#include "parastichy.h"
 
-enum { PL_SCALE, PL_OUTER, PL_INNER, PL_EXPONENT, PL_DOME, PL__N };
+enum { PL_SCALE, PL_OUTER, PL_INNER, PL_EXPONENT, PL_DOME, PL_PARASTICHIES,
+	PL__N };
 
 struct planar {
 	struct group_at	 at;
@@ -19,6 +21,7 @@ struct planar {
 	double		 inner;		/* radius of the first ring */
 	double		 exponent;	/* r = inner + c n^exponent */
 	double		 dome;		/* height of the centre above the rim */
+	struct int_list	 parastichies;	/* instead of count: the rim's pair */
 };
 
 #define P(f)	offsetof(struct planar, f)
@@ -40,6 +43,9 @@ static const struct row planar_rows[] = {
 	[PL_DOME] = { .name = "dome", .type = T_FLOAT, .off = P(dome),
 	  .lo = -HUGE_VAL, .hi = HUGE_VAL, .defstr = "0",
 	  .doc = "height of the centre above the rim (paraboloid)" },
+	[PL_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
+	  .off = P(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
+	  .doc = "instead of count: the contact pair [m, n] wanted at the rim" },
 };
 
 static const struct table planar_table = TABLE(planar_rows, struct planar);
@@ -54,8 +60,14 @@ power(double n, double e)
 static int
 planar_check(const struct scene *sc, const struct planar *p)
 {
-	if (!sc->given[S_COUNT]) {
-		scene_error(sc, 1, "missing setting 'count'");
+	if (!sc->given[S_COUNT] && !p->given[PL_PARASTICHIES]) {
+		scene_error(sc, 1, "missing setting 'count' (or "
+		    "planar.parastichies)");
+		return -1;
+	}
+	if (sc->given[S_COUNT] && p->given[PL_PARASTICHIES]) {
+		scene_error(sc, p->given[PL_PARASTICHIES], "give count or "
+		    "planar.parastichies, not both");
 		return -1;
 	}
 	if (p->given[PL_OUTER] && p->given[PL_SCALE]) {
@@ -72,14 +84,11 @@ planar_check(const struct scene *sc, const struct planar *p)
 }
 
 static int
-planar_run(const struct scene *sc, const void *params, struct result *res)
+place(const struct scene *sc, const struct planar *p, size_t count,
+    struct result *res)
 {
-	const struct planar *p = params;
-	size_t count = (size_t)sc->count;
 	double c = p->scale, rim, kdome;
 
-	if (planar_check(sc, p) < 0)
-		return -1;
 	if (p->given[PL_OUTER])
 		c = count > 1 ? (p->outer - p->inner) /
 		    pow((double)(count - 1), p->exponent) :
@@ -110,6 +119,60 @@ planar_run(const struct scene *sc, const void *params, struct result *res)
 	result_info(res, "scale", 1, c);
 	result_info(res, "outer", 1, rim);
 	return 0;
+}
+
+/* Inverse design: the rim pair of a trial count. */
+struct trial {
+	const struct scene *sc;
+	const struct planar *p;
+};
+
+static int
+trial_pair(void *ctx, double x, int pair[2])
+{
+	const struct trial *T = ctx;
+	struct result res = { 0 };
+	struct para_zone z[64];
+	size_t nz;
+
+	if (place(T->sc, T->p, (size_t)llround(x), &res) != 0)
+		return -1;
+	nz = para_zones(&res, NULL, z, 64);
+	pair[0] = nz ? z[nz - 1].m : 0;
+	pair[1] = nz ? z[nz - 1].n : 0;
+	result_free(&res);
+	return 0;
+}
+
+static int
+planar_run(const struct scene *sc, const void *params, struct result *res)
+{
+	const struct planar *p = params;
+	const struct int_list *want = &p->parastichies;
+	struct trial T = { sc, p };
+	char reach[512];
+	double x;
+
+	if (planar_check(sc, p) < 0)
+		return -1;
+	if (!p->given[PL_PARASTICHIES])
+		return place(sc, p, (size_t)sc->count, res);
+	if (para_want_check(sc, p->given[PL_PARASTICHIES],
+	    "planar.parastichies", want) != 0)
+		return -1;
+	/* Counts up to where the rim shows about 4 n around it. */
+	x = para_search(want->v, 8, fmin(COUNT_MAX, 40.0 * want->v[1] *
+	    want->v[1] + 64), 1, trial_pair, &T, reach, sizeof(reach));
+	if (x < 0)
+		return -1;
+	if (x == 0) {
+		scene_error(sc, p->given[PL_PARASTICHIES], "no count shows "
+		    "parastichies %d/%d at the rim with divergence %.9g; the "
+		    "counts tried show %s", want->v[0], want->v[1],
+		    sc->divergence, reach);
+		return -1;
+	}
+	return place(sc, p, (size_t)llround(x), res);
 }
 
 const struct model planar_model = {

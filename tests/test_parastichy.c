@@ -211,6 +211,60 @@ collision_zones(void)
 	scene_free(&sc);
 }
 
+/*
+ * Inverse design, confirmed by measuring the structure made (with the
+ * same measure --info uses; the search's own trials are not trusted):
+ * the pair asked for at the rim or base.
+ */
+static void
+inverse(void)
+{
+	static const struct {
+		const char	*what, *fmt;
+		int		 rim_last;
+	} c[] = {
+		{ "planar", "model = \"planar\"; planar = { parastichies = "
+		  "[%d, %d]; };", 1 },
+		{ "collision, cone", "model = \"collision\"; collision = { "
+		  "receptacle = { shape = \"cone\"; }; parastichies = [%d, "
+		  "%d]; };", 0 },
+		{ "collision, hemisphere", "model = \"collision\"; collision = "
+		  "{ receptacle = { shape = \"hemisphere\"; }; parastichies = "
+		  "[%d, %d]; };", 0 },
+		{ "collision, disk", "model = \"collision\"; collision = { "
+		  "receptacle = { shape = \"disk\"; }; parastichies = [%d, "
+		  "%d]; };", 0 },
+		{ "area, cone", "model = \"area\"; area = { receptacle = { "
+		  "shape = \"cone\"; }; parastichies = [%d, %d]; };", 0 },
+		{ "area, cylinder", "model = \"area\"; area = { receptacle = { "
+		  "shape = \"cylinder\"; }; parastichies = [%d, %d]; };", 0 },
+	};
+	static const int want[][2] = { { 8, 13 }, { 13, 21 } };
+
+	for (size_t k = 0; k < sizeof(c) / sizeof(c[0]); k++)
+		for (int w = 0; w < 2; w++) {
+			char text[256];
+			struct scene sc;
+			struct result res;
+			struct para_zone z[64];
+			size_t nz = 0;
+			const struct para_zone *b = NULL;
+
+			snprintf(text, sizeof(text), c[k].fmt, want[w][0],
+			    want[w][1]);
+			if (run(text, &sc, &res) == 0 &&
+			    (nz = para_zones(&res, NULL, z, 64)) > 0)
+				b = c[k].rim_last ? &z[nz - 1] : &z[0];
+			check(b != NULL && b->m == want[w][0] && b->n ==
+			    want[w][1], "inverse design, %s: asked for %d/%d, "
+			    "the structure made measures %d/%d (%zu organs)",
+			    c[k].what, want[w][0], want[w][1], b ? b->m : 0,
+			    b ? b->n : 0, res.count);
+			result_free(&res);
+			scene_free(&sc);
+		}
+}
+
 int
 main(void)
 {
@@ -218,5 +272,6 @@ main(void)
 	vogel();
 	van_iterson();
 	collision_zones();
+	inverse();
 	return check_failures != 0;
 }
