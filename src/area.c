@@ -304,10 +304,19 @@ area_run(const struct scene *sc, const void *params, struct result *res)
 		return -1;
 	}
 	{
-		struct trial T = { sc, P, 40LL * (want->v[0] + want->v[1]) };
+		struct trial T = { sc, P, 12LL * (want->v[0] + want->v[1]) };
 
-		r = para_search(want->v, rhi / 200, rhi, 0, trial_pair, &T,
+		/*
+		 * First near where such a pair usually lies, a base ring of
+		 * about n organs of radius 2.3 rim / n; then the whole range.
+		 */
+		double est = 2.3 * rim / want->v[1];
+
+		r = para_search(want->v, est / 3, est * 3, 0, trial_pair, &T,
 		    reach, sizeof(reach));
+		if (r == 0)
+			r = para_search(want->v, rhi / 200, rhi, 0, trial_pair, &T,
+			    reach, sizeof(reach));
 	}
 	if (r < 0)
 		return -1;

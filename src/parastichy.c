@@ -337,7 +337,7 @@ double
 para_search(const int want[2], double lo, double hi, int grows,
     para_measure_fn *measure, void *ctx, char *reach, size_t reachsz)
 {
-	enum { STEPS = 48 };
+	enum { STEPS = 20 };
 	int seen[STEPS + 1][2], nseen = 0, err = 0, prev = -2;
 	double tf = -1, a, b, t0, t1;
 
@@ -396,7 +396,7 @@ para_search(const int want[2], double lo, double hi, int grows,
 	/* The stretch showing want: bracket both of its edges. */
 	a = 0;
 	b = tf;
-	for (int it = 0; it < 20; it++) {
+	for (int it = 0; it < 10; it++) {
 		double m = (a + b) / 2;
 		int c = side_at(m, lo, hi, grows, want, measure, ctx, &err);
 
@@ -410,7 +410,7 @@ para_search(const int want[2], double lo, double hi, int grows,
 	t0 = b;
 	a = tf;
 	b = 1;
-	for (int it = 0; it < 20; it++) {
+	for (int it = 0; it < 10; it++) {
 		double m = (a + b) / 2;
 		int c = side_at(m, lo, hi, grows, want, measure, ctx, &err);
 
