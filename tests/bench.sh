@@ -44,7 +44,9 @@ echo "== collision model: exact placement, one core"
 echo "== inhibition model, one core"
 "$TESTBIN/bench_inhibition"
 
-echo "== area model, $N organs on a hemisphere, one core (--info: the model alone)"
+echo "== area model alone (model_run, no output), one core"
+"$TESTBIN/bench_area"
+echo "== area model through --info (with the parastichy analysis)"
 printf 'model = "area";\ncount = %d;\narea = { receptacle = { shape = "hemisphere"; }; };\n' $N >"$OUT/area.cfg"
 # The collision model on the same receptacle, with the radius at which
 # it places the same count (a little under the area model's even radius).
