@@ -223,7 +223,7 @@ static double
 next_angle(struct field *F, double *gaps)
 {
 	size_t k = F->near < F->n ? F->near : F->n, best[CANDIDATES];
-	double bestE[CANDIDATES], th = 0, emin = HUGE_VAL;
+	double bestE[CANDIDATES], th = 0, emin = HUGE_VAL, ba = 0, bb = 0;
 	int nb = 0;
 
 	for (size_t i = 0; i < k; i++)
@@ -278,13 +278,27 @@ next_angle(struct field *F, double *gaps)
 				off -= 2 * M_PI;
 			}
 		}
-		if (all > k)
-			x = minimise_from(F, a, b, x, all, &e);
+		/*
+		 * The whole sum once at the near minimum: its value less
+		 * E'^2 / 2E'' foretells the whole minimum there, which ranks
+		 * the candidates; only the best is then refined.
+		 */
+		if (all > k) {
+			double f[3];
+
+			energy(F, x, all, f);
+			e = f[2] > 0 ? f[0] - f[1] * f[1] / (2 * f[2]) : f[0];
+		}
 		if (e < emin) {
 			emin = e;
 			th = x;
+			ba = a;
+			bb = b;
 		}
 	}
+	if (nb > 0 && (F->P->kernel == K_GAUSSIAN ? F->n : F->far) > k)
+		th = minimise_from(F, ba, bb, th, F->P->kernel == K_GAUSSIAN ?
+		    F->n : F->far, &emin);
 	return th;
 }
 
