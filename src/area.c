@@ -238,39 +238,27 @@ place_area(const struct scene *sc, const struct area *P, struct result *res,
 	return 0;
 }
 
-/* Inverse design: the base pair of a trial radius, on a few organs. */
 struct trial {
 	const struct scene *sc;
 	const struct area *P;
-	long long	 cap;
 };
 
 static int
-trial_pair(void *ctx, double r, int pair[2])
+trial_place(void *ctx, double r, long long cap, struct result *res)
 {
 	const struct trial *T = ctx;
-	struct result res = { 0 };
-	struct para_zone z[64];
-	size_t nz;
 
-	if (place_area(T->sc, T->P, &res, r, T->cap) != 0)
-		return -1;
-	nz = para_zones(&res, NULL, z, 64);
-	pair[0] = nz ? z[0].m : 0;
-	pair[1] = nz ? z[0].n : 0;
-	result_free(&res);
-	return 0;
+	return place_area(T->sc, T->P, res, r, cap);
 }
 
 static int
 area_run(const struct scene *sc, const void *params, struct result *res)
 {
 	const struct area *P = params;
-	const struct int_list *want = &P->parastichies;
-	int at = P->given[AR_PARASTICHIES];
+	struct trial T = { sc, P };
+	int at = P->given[AR_PARASTICHIES], npts;
 	double (*pts)[2], rim, rhi, r;
-	char reach[512];
-	int npts;
+	struct curve cv;
 
 	if (!at)
 		return place_area(sc, P, res, 0, 0);
@@ -279,55 +267,20 @@ area_run(const struct scene *sc, const void *params, struct result *res)
 		    "not both");
 		return -1;
 	}
-	if (para_want_check(sc, at, "area.parastichies", want) != 0)
-		return -1;
 	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
 		return -1;
 	rim = pts[0][0];
-	{
-		struct curve cv;
-
-		/* At most a radius whose cell fits four times. */
-		if (curve_init(&cv, (const double (*)[2])pts, npts) == 0) {
-			rhi = fmin(rim * M_PI / 3, sqrt(cv.area / (8 *
-			    sqrt(3.0))));
-			curve_free(&cv);
-		} else
-			rhi = rim * M_PI / 3;
+	/* At most a radius whose cell fits four times. */
+	rhi = rim * M_PI / 3;
+	if (curve_init(&cv, (const double (*)[2])pts, npts) == 0) {
+		rhi = fmin(rhi, sqrt(cv.area / (8 * sqrt(3.0))));
+		curve_free(&cv);
 	}
 	free(pts);
-	if (!(rim > 0)) {
-		/* At a pole the pair changes organ by organ: no base pair. */
-		scene_error(sc, at, "parastichies = [m, n] needs a receptacle "
-		    "with a rim at its base: at a pole the pair changes from "
-		    "one organ to the next");
-		return -1;
-	}
-	{
-		struct trial T = { sc, P, 12LL * (want->v[0] + want->v[1]) };
-
-		/*
-		 * First near where such a pair usually lies, a base ring of
-		 * about n organs of radius 2.3 rim / n; then the whole range.
-		 */
-		double est = 2.3 * rim / want->v[1];
-
-		r = para_search(want->v, est / 3, est * 3, 0, trial_pair, &T,
-		    reach, sizeof(reach));
-		if (r == 0)
-			r = para_search(want->v, rhi / 200, rhi, 0, trial_pair, &T,
-			    reach, sizeof(reach));
-	}
-	if (r < 0)
-		return -1;
-	if (r == 0) {
-		scene_error(sc, at, "no constant radius shows parastichies "
-		    "%d/%d at the base of this receptacle; the radii tried "
-		    "show %s", want->v[0], want->v[1], reach);
-		return -1;
-	}
+	r = para_design_radius(sc, at, "area.parastichies", &P->parastichies,
+	    rim, rhi, trial_place, &T);
 	/* --info's radius line is the one chosen. */
-	return place_area(sc, P, res, r, 0);
+	return r < 0 ? -1 : place_area(sc, P, res, r, 0);
 }
 
 const struct model area_model = {

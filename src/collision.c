@@ -635,38 +635,18 @@ collision_place(const struct scene *sc, struct result *res, int how)
 	return place(sc, res, how, 0, 0);
 }
 
-/* Inverse design: the base pair of a trial radius, on a few primordia. */
-struct trial {
-	const struct scene *sc;
-	long long	 cap;
-};
-
 static int
-trial_pair(void *ctx, double r, int pair[2])
+trial_place(void *ctx, double r, long long cap, struct result *res)
 {
-	const struct trial *T = ctx;
-	struct result res = { 0 };
-	struct para_zone z[64];
-	size_t nz;
-
-	if (place(T->sc, &res, PLACE_EXACT, r, T->cap) != 0)
-		return -1;
-	nz = para_zones(&res, NULL, z, 64);
-	pair[0] = nz ? z[0].m : 0;
-	pair[1] = nz ? z[0].n : 0;
-	result_free(&res);
-	return 0;
+	return place(ctx, res, PLACE_EXACT, r, cap);
 }
 
 static int
 collision_run(const struct scene *sc, const void *params, struct result *res)
 {
 	const struct collision *P = params;
-	const struct int_list *want = &P->parastichies;
-	int at = P->given[CO_PARASTICHIES];
+	int at = P->given[CO_PARASTICHIES], npts;
 	double (*pts)[2], rim, r;
-	char reach[512];
-	int npts;
 
 	if (!at)
 		return collision_place(sc, res, PLACE_EXACT);
@@ -675,44 +655,13 @@ collision_run(const struct scene *sc, const void *params, struct result *res)
 		    "collision.parastichies, not both");
 		return -1;
 	}
-	if (para_want_check(sc, at, "collision.parastichies", want) != 0)
-		return -1;
-	/* From a few around the base to 1/200 of that. */
 	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
 		return -1;
 	rim = pts[0][0];
 	free(pts);
-	if (!(rim > 0)) {
-		/* At a pole the pair changes organ by organ: no base pair. */
-		scene_error(sc, at, "parastichies = [m, n] needs a receptacle "
-		    "with a rim at its base: at a pole the pair changes from "
-		    "one organ to the next");
-		return -1;
-	}
-	{
-		struct trial T = { sc, 12LL * (want->v[0] + want->v[1]) };
-
-		/*
-		 * First near where such a pair usually lies, a base ring of
-		 * about n organs of radius 2.3 rim / n; then the whole range.
-		 */
-		double est = 2.3 * rim / want->v[1];
-
-		r = para_search(want->v, est / 3, est * 3, 0, trial_pair, &T,
-		    reach, sizeof(reach));
-		if (r == 0)
-			r = para_search(want->v, rim * M_PI / 600, rim * M_PI / 3, 0,
-			    trial_pair, &T, reach, sizeof(reach));
-	}
-	if (r < 0)
-		return -1;
-	if (r == 0) {
-		scene_error(sc, at, "no constant radius shows parastichies "
-		    "%d/%d at the base of this receptacle; the radii tried "
-		    "show %s", want->v[0], want->v[1], reach);
-		return -1;
-	}
-	if (place(sc, res, PLACE_EXACT, r, 0) != 0)
+	r = para_design_radius(sc, at, "collision.parastichies",
+	    &P->parastichies, rim, rim * M_PI / 3, trial_place, (void *)sc);
+	if (r < 0 || place(sc, res, PLACE_EXACT, r, 0) != 0)
 		return -1;
 	result_info(res, "radius", 1, r);
 	return 0;

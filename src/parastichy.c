@@ -451,3 +451,65 @@ para_want_check(const struct scene *sc, int line, const char *path,
 	}
 	return 0;
 }
+
+struct design {
+	para_place_fn	*place;
+	void		*ctx;
+	long long	 cap;
+};
+
+/* The base pair of a trial radius, on a few organs. */
+static int
+design_pair(void *ctx, double r, int pair[2])
+{
+	const struct design *D = ctx;
+	struct result res = { 0 };
+	struct para_zone z[64];
+	size_t nz;
+
+	if (D->place(D->ctx, r, D->cap, &res) != 0)
+		return -1;
+	nz = para_zones(&res, NULL, z, 64);
+	pair[0] = nz ? z[0].m : 0;
+	pair[1] = nz ? z[0].n : 0;
+	result_free(&res);
+	return 0;
+}
+
+double
+para_design_radius(const struct scene *sc, int line, const char *path,
+    const struct int_list *want, double rim, double rhi,
+    para_place_fn *place, void *ctx)
+{
+	/* Enough organs for the base to show its pair, and not many more. */
+	struct design D = { place, ctx, 12LL * (want->v[0] + want->v[1]) };
+	char reach[512];
+	double r, est;
+
+	if (para_want_check(sc, line, path, want) != 0)
+		return -1;
+	if (!(rim > 0)) {
+		/* At a pole the pair changes organ by organ: no base pair. */
+		scene_error(sc, line, "parastichies = [m, n] needs a receptacle "
+		    "with a rim at its base: at a pole the pair changes from "
+		    "one organ to the next");
+		return -1;
+	}
+	/*
+	 * First near where such a pair usually lies, a base ring of about
+	 * n organs of radius 2.3 rim / n; then the whole range.
+	 */
+	est = 2.3 * rim / want->v[1];
+	r = para_search(want->v, est / 3, est * 3, 0,
+	    design_pair, &D, reach, sizeof(reach));
+	if (r == 0)
+		r = para_search(want->v, rhi / 200, rhi, 0, design_pair, &D,
+		    reach, sizeof(reach));
+	if (r == 0) {
+		scene_error(sc, line, "no constant radius shows parastichies "
+		    "%d/%d at the base of this receptacle; the radii tried "
+		    "show %s", want->v[0], want->v[1], reach);
+		return -1;
+	}
+	return r;
+}

@@ -45,6 +45,20 @@ double	para_search(const int want[2], double lo, double hi, int grows,
 struct scene;
 struct int_list;
 
+/* Make the structure with a constant radius r, at most cap organs. */
+typedef int para_place_fn(void *ctx, double r, long long cap,
+    struct result *);
+
+/*
+ * Inverse design of a radius: the constant radius whose structure shows
+ * the pair want at its base, on a receptacle whose base circle has
+ * radius rim, searched up to rhi; want as given at path, line.  The
+ * radius, or -1 after a diagnostic.
+ */
+double	para_design_radius(const struct scene *, int line, const char *path,
+	    const struct int_list *want, double rim, double rhi,
+	    para_place_fn *, void *ctx);
+
 /* A pair asked for at path, given at line: [m, n], 0 < m < n, coprime. */
 int	para_want_check(const struct scene *, int line, const char *path,
 	    const struct int_list *);

@@ -2,6 +2,7 @@
 # bench.sh - speed, measured side by side in one run (make bench).
 # Not part of make check: timings depend on the machine.
 : "${PHYLLO:=./phyllo-export}" "${TESTBIN:=build}"
+. tests/lib.sh
 OUT=tests/out/bench
 mkdir -p "$OUT" || exit 1
 
@@ -114,11 +115,7 @@ if [ -n "$BLENDERS" ]; then
 	echo "== Blender import (bpy, no numpy), seconds inside Blender beyond start-up"
 	echo "script size for 100,000 organs: $s1 bytes = $(echo "$s1" | awk '{ printf "%.1f", $1 / 100000 }') bytes an organ"
 	for b in $BLENDERS; do
-		if [ -d "$b" ]; then
-			bl() { sh tests/blender-in-root.sh "$b" "$@"; }
-		else
-			bl() { "$b" "$@"; }
-		fi
+		use_blender "$b"
 		ver=$(bl --version 2>/dev/null | sed -n 's/^Blender \([0-9.]*\).*/\1/p' | head -1)
 		# inside SCRIPT: the seconds timeit.py measures, best of three.
 		inside() {

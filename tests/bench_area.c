@@ -9,15 +9,7 @@
 
 #include "model.h"
 #include "scene.h"
-
-static double
-now(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
-}
+#include "clock.h"
 
 /* Best of three seconds to run the scene's model; count placed. */
 static double

@@ -13,15 +13,7 @@
 
 #include "model.h"
 #include "scene.h"
-
-static double
-now(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
-}
+#include "clock.h"
 
 /* Seconds to place a full dome of radius-r primordia; count placed. */
 static double

@@ -9,15 +9,7 @@
 
 #include "model.h"
 #include "scene.h"
-
-static double
-now(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
-}
+#include "clock.h"
 
 /* Seconds to place count primordia at growth G; -1 on error. */
 static double

@@ -52,12 +52,7 @@ assert "parses, OBJECTS is a literal" '[ $rc -eq 0 ]'
 end
 
 for b in $BLENDERS; do
-	# A directory is a Debian root holding a Blender of its own.
-	if [ -d "$b" ]; then
-		bl() { sh tests/blender-in-root.sh "$b" "$@"; }
-	else
-		bl() { "$b" "$@"; }
-	fi
+	use_blender "$b"
 	ver=$(bl --version 2>/dev/null | sed -n 's/^Blender \([0-9.]*\).*/\1/p' | head -1)
 	V="Blender ${ver:-?}"
 	# blend ARGS...: this Blender without a window, failing on a Python error.

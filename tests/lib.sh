@@ -57,3 +57,20 @@ csv_close() {
 	END { if (!bad && FNR != na) { print "missing lines"; bad = 1 } exit bad }
 	' "$1" "$2"
 }
+
+# use_blender B: bl then runs Blender B, a command, or a Debian root made
+# by tests/blender-root.sh (through tests/blender-in-root.sh).
+use_blender() {
+	if [ -d "$1" ]; then
+		BL_ROOT=$1
+	else
+		BL_ROOT= BL_CMD=$1
+	fi
+}
+bl() {
+	if [ -n "$BL_ROOT" ]; then
+		sh tests/blender-in-root.sh "$BL_ROOT" "$@"
+	else
+		"$BL_CMD" "$@"
+	fi
+}
