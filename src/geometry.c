@@ -36,7 +36,10 @@ void
 frame_revolution_cs(struct organ *o, double phi, double c, double s,
     double rho, double z, double t_rho, double t_z)
 {
-	double k = 1 / hypot(t_rho, t_z);
+	double n2 = t_rho * t_rho + t_z * t_z;
+	/* hypot() only where the squares could overflow or underflow. */
+	double k = n2 > 1e-280 && n2 < 1e280 ? 1 / sqrt(n2) :
+	    1 / hypot(t_rho, t_z);
 
 	t_rho *= k;
 	t_z *= k;
