@@ -83,6 +83,7 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 
 #define R0		1.0	/* the meristem's radius: the unit */
 #define AGE_MAX		700	/* e^700: the largest radius a double holds */
+#define GROWTH_MIN	0.001	/* the slowest growth searched surely */
 
 /* The primordia so far: angle, its cosine and sine; ages from n. */
 struct field {
@@ -209,9 +210,7 @@ dcmp(const void *a, const void *b)
 	return x < y ? -1 : x > y;
 }
 
-#define CANDIDATES	3
-/* The newest that rank the gaps: the field there is theirs. */
-#define RANK_TERMS	32
+#define CANDIDATES	6
 
 /*
  * The angle of least inhibition on the edge.  The circle is cut at the
@@ -236,7 +235,7 @@ next_angle(struct field *F, double *gaps)
 
 		if (gaps[g + 1] - gaps[g] < 1e-12)
 			continue;
-		energy(F, mid, k < RANK_TERMS ? k : RANK_TERMS, e);
+		energy(F, mid, k, e);
 		/* Keep the CANDIDATES lowest, sorted. */
 		for (j = nb; j > 0 && bestE[j - 1] > e[0]; j--)
 			if (j < CANDIDATES) {
@@ -296,9 +295,14 @@ next_angle(struct field *F, double *gaps)
 			bb = b;
 		}
 	}
+	/*
+	 * The whole sum may move the minimum a little past the near gap's
+	 * end (an old, weak primordium's angle): refine with room on
+	 * either side; Newton from so near stays in this minimum's well.
+	 */
 	if (nb > 0 && (F->P->kernel == K_GAUSSIAN ? F->n : F->far) > k)
-		th = minimise_from(F, ba, bb, th, F->P->kernel == K_GAUSSIAN ?
-		    F->n : F->far, &emin);
+		th = minimise_from(F, ba - (bb - ba), bb + (bb - ba), th,
+		    F->P->kernel == K_GAUSSIAN ? F->n : F->far, &emin);
 	return th;
 }
 
@@ -364,6 +368,15 @@ contact_radii(struct result *res, size_t k)
 	}
 }
 
+/* How many recent primordia cut the circle at growth G: 3 sqrt(2 pi / G). */
+static size_t
+near_count(double G)
+{
+	double k = ceil(3 * sqrt(2 * M_PI / G));
+
+	return k < 12 ? 12 : (size_t)k;
+}
+
 /* The settled divergence: the mean and spread of the last two thirds. */
 static void
 settled(const double *phi, size_t n, double *mean, double *spread)
@@ -416,10 +429,15 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 			free(F.S);
 			return -1;
 		}
-		if (!(g > 0) || g > 100) {
+		/*
+		 * Below 0.001 the gaps among the recent primordia are too
+		 * fine for the candidate search to be sure of the global
+		 * minimum (the tests check down to 0.001).
+		 */
+		if (!(g >= GROWTH_MIN) || g > 100) {
 			diag(ST_SCENE, sc->file, P->growth.line, 0,
 			    "inhibition.growth is %.9g at primordium %zu; it "
-			    "must be greater than 0 and at most 100", g, n);
+			    "must be between %g and 100", g, n, GROWTH_MIN);
 			free(F.S);
 			return -1;
 		}
@@ -448,13 +466,16 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 	F.c = xcalloc(N, sizeof(*F.c));
 	F.s = xcalloc(N, sizeof(*F.s));
 	F.r = xcalloc(N + 1, sizeof(*F.r));
-	/* Enough recent ones that their gaps hold one minimum each. */
-	F.near = (size_t)ceil(3 * sqrt(2 * M_PI / gmin));
-	if (F.near < 12)
-		F.near = 12;
-	gaps = xcalloc(F.near + 2, sizeof(*gaps));
+	/* Room for the most gaps any step looks at (near_count()). */
+	gaps = xcalloc(near_count(gmin) + 2, sizeof(*gaps));
 
 	for (size_t n = 0; n < N; n++) {
+		/*
+		 * Enough recent ones that their gaps hold one minimum each,
+		 * for the growth of this plastochron: finer gaps than the
+		 * field's features would rank the wrong ones.
+		 */
+		F.near = near_count(n > 0 ? F.S[n] - F.S[n - 1] : F.S[1]);
 		if (n >= 2)
 			F.far = P->kernel == K_POWER && !all_pairs ?
 			    far_count(&F) : n;

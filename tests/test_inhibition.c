@@ -235,6 +235,9 @@ main(void)
 	    "0.3; };", 0.3, 3, 0, 3);
 	minima("power law, G = 0.02", "count = 300; inhibition = { growth = "
 	    "0.02; };", 0.02, 3, 0, 11);
+	/* Slow growth: many recent primordia shape the field. */
+	minima("power law, G = 0.001", "count = 1400; inhibition = { growth "
+	    "= 0.001; };", 0.001, 3, 0, 97);
 	minima("power law s = 2, G = 0.1", "count = 150; inhibition = { "
 	    "growth = 0.1; exponent = 2; };", 0.1, 2, 0, 7);
 	minima("gaussian kernel", "count = 150; inhibition = { kernel = "
