@@ -128,42 +128,46 @@ piece_length(const struct piece *p, double u)
 	return piece_measure(p, u, NULL);
 }
 
-/* The area piece p sweeps between u0 and u1, 8-point Gauss-Legendre. */
-static double
-piece_area_gl(const struct piece *p, double u0, double u1)
+/* 4-point Gauss-Legendre nodes and weights on [-1, 1], the positive half. */
+static const double gl4_x[2] = { 0.3399810435848563, 0.8611363115940526 };
+static const double gl4_w[2] = { 0.6521451548625461, 0.3478548451374538 };
+
+/*
+ * The area piece p sweeps between u0 and u1, by Gauss-Legendre with the
+ * half nodes x and weights w (their mirror images are implied).
+ */
+static inline double
+piece_area_nodes(const struct piece *p, double u0, double u1,
+    const double *x, const double *w, int half)
 {
 	double h = (u1 - u0) / 2, m = (u0 + u1) / 2, sum = 0;
 
-	for (int i = 0; i < 4; i++)
+	for (int i = 0; i < half; i++)
 		for (int sgn = -1; sgn <= 1; sgn += 2) {
-			double x[2], d[2];
+			double q[2], d[2];
 
-			piece_eval(p, m + sgn * h * gl_x[i], x, d);
-			sum += gl_w[i] * x[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
+			piece_eval(p, m + sgn * h * x[i], q, d);
+			sum += w[i] * q[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
 		}
 	return 2 * M_PI * sum * h;
 }
 
+/* With 8 points: the table's. */
+static double
+piece_area_gl(const struct piece *p, double u0, double u1)
+{
+	return piece_area_nodes(p, u0, u1, gl_x, gl_w, 4);
+}
+
 /*
- * The same from 0 to u with 4 points, for the inverse's Newton steps:
- * the table was built with 8 points, adaptively; inside one short piece
- * the integrand is so smooth that 4 points agree with it to 1e-15.
+ * From 0 to u with 4 points, for the inverse's Newton steps: the table
+ * was built with 8 points, adaptively; inside one short piece the
+ * integrand is so smooth that 4 points agree with it to 1e-15.
  */
 static double
 piece_area_to(const struct piece *p, double u)
 {
-	static const double x4[2] = { 0.3399810435848563, 0.8611363115940526 };
-	static const double w4[2] = { 0.6521451548625461, 0.3478548451374538 };
-	double h = u / 2, sum = 0;
-
-	for (int i = 0; i < 2; i++)
-		for (int sgn = -1; sgn <= 1; sgn += 2) {
-			double x[2], d[2];
-
-			piece_eval(p, h + sgn * h * x4[i], x, d);
-			sum += w4[i] * x[0] * sqrt(d[0] * d[0] + d[1] * d[1]);
-		}
-	return 2 * M_PI * sum * h;
+	return piece_area_nodes(p, 0, u, gl4_x, gl4_w, 2);
 }
 
 /*

@@ -323,12 +323,11 @@ field_add(struct field *F, double th)
 static size_t
 far_count(const struct field *F)
 {
-	double s = F->P->exponent, n = (double)F->n;
+	double s = F->P->exponent;
 	double delta = R0 * (exp(F->S[F->n] - F->S[F->n - 1]) - 1);
 	double nearest = pow(delta, -s);
 	size_t k = F->far;
 
-	(void)n;
 	while (k < F->n) {
 		double D = R0 * (exp(F->S[F->n] - F->S[F->n - 1 - k]) - 1);
 
@@ -522,7 +521,6 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 		double rho = (P->radii == RADII_VOGEL ?
 		    sqrt((double)(N - 1 - i) + 0.5) :
 		    R0 * exp(F.S[N - 1] - F.S[i])) * scale;
-		double g = 0;
 		double phi = remainder(flip * F.phi[i], 2 * M_PI) * (180 / M_PI);
 		double z = rim > 0 ? P->dome * (1 - (rho / rim) * (rho / rim)) :
 		    P->dome;
@@ -530,7 +528,6 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 		if (phi < 0)
 			phi += 360;
 		frame_revolution(o, phi, rho, z, 1, -kdome * rho);
-		(void)g;
 	}
 	contact_radii(res, F.near);
 	result_info(res, "settled", 2, mean, spread);

@@ -232,30 +232,50 @@ para_pairs(const struct result *r, int (*pair)[2])
 	kd_free(&T);
 }
 
-/* The most common pair among pair[from..to), or 0 0. */
-static void
-modal(const int (*pair)[2], size_t from, size_t to, int out[2])
+struct tally {
+	int	 m, n;
+	size_t	 first;		/* where it stood in the sample */
+};
+
+static int
+tally_cmp(const void *a, const void *b)
 {
-	int best = 0;
+	const struct tally *x = a, *y = b;
+
+	if (x->m != y->m)
+		return x->m < y->m ? -1 : 1;
+	if (x->n != y->n)
+		return x->n < y->n ? -1 : 1;
+	return x->first < y->first ? -1 : x->first > y->first;
+}
+
+/*
+ * The most common pair among the n of pair, or 0 0; of equally common
+ * ones the one met first.  Sorted, so a sample of thousands is cheap.
+ */
+static void
+modal(const int (*pair)[2], size_t n, int out[2])
+{
+	struct tally *t = xcalloc(n ? n : 1, sizeof(*t));
+	size_t nt = 0, best = 0, bestfirst = 0;
 
 	out[0] = out[1] = 0;
-	/* Runs are short: count each distinct pair by scanning. */
-	for (size_t i = from; i < to; i++) {
-		int c = 0;
-
-		if (pair[i][0] == 0)
-			continue;
-		if (i > from && pair[i][0] == pair[i - 1][0] &&
-		    pair[i][1] == pair[i - 1][1])
-			continue;
-		for (size_t j = from; j < to; j++)
-			c += pair[j][0] == pair[i][0] && pair[j][1] == pair[i][1];
-		if (c > best) {
-			best = c;
-			out[0] = pair[i][0];
-			out[1] = pair[i][1];
+	for (size_t i = 0; i < n; i++)
+		if (pair[i][0] != 0)
+			t[nt++] = (struct tally){ pair[i][0], pair[i][1], i };
+	qsort(t, nt, sizeof(*t), tally_cmp);
+	for (size_t i = 0, j; i < nt; i = j) {
+		for (j = i; j < nt && t[j].m == t[i].m && t[j].n == t[i].n; j++)
+			;
+		/* t[i] is the group's first in the sample. */
+		if (j - i > best || (j - i == best && t[i].first < bestfirst)) {
+			best = j - i;
+			bestfirst = t[i].first;
+			out[0] = t[i].m;
+			out[1] = t[i].n;
 		}
 	}
+	free(t);
 }
 
 size_t
@@ -279,7 +299,7 @@ para_zones(const struct result *r, const int (*pair)[2], struct para_zone *z,
 				memcpy(s[n], pair[i], sizeof(s[0]));
 			else
 				pair_at(&T, r, i, s[n]);
-		modal((const int (*)[2])s, 0, n, m);
+		modal((const int (*)[2])s, n, m);
 		if (m[0] == 0)
 			continue;
 		if (nz > 0 && z[nz - 1].m == m[0] && z[nz - 1].n == m[1])

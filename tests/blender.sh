@@ -51,6 +51,15 @@ assert ast.literal_eval(objs.value) == [("Seed", 100), ("Bract", 50), ("Petal", 
 assert "parses, OBJECTS is a literal" '[ $rc -eq 0 ]'
 end
 
+# checked NAME MIN: after a check.py run, keep its log as NAME.log and
+# assert Blender succeeded with no check failed and at least MIN passed.
+checked() {
+	L=$D/$1.log N=$2
+	cp "$OUT/blender.log" "$L"
+	assert "Blender exit 0" '[ $rc -eq 0 ]'
+	assert "all checks" '! grep -q "check: FAILED" $L && [ $(grep -c "check: ok" $L) -ge $N ]'
+}
+
 for b in $BLENDERS; do
 	use_blender "$b"
 	ver=$(bl --version 2>/dev/null | sed -n 's/^Blender \([0-9.]*\).*/\1/p' | head -1)
@@ -73,9 +82,7 @@ for b in $BLENDERS; do
 	try "$V: run twice into the artist's .blend: instances of their Seed and Bract at the CSV positions, rotations and scales, one copy" \
 		blend "$D/artist.blend" --python "$OUT/head.py" --python "$OUT/head.py" \
 		--python tests/blender/check.py -- "$OUT/head.csv" Head instances
-	cp "$OUT/blender.log" "$D/instances.log"
-	assert "Blender exit 0" '[ $rc -eq 0 ]'
-	assert "all checks" '! grep -q "check: FAILED" $D/instances.log && [ $(grep -c "check: ok" $D/instances.log) -ge 6 ]'
+	checked instances 6
 	assert "says what it did" 'grep -q "phyllo-export: built collection .Head.: 200 organs of 3 objects" $D/instances.log'
 	assert "no traceback" '! grep -q Traceback $D/instances.log'
 	end
@@ -83,17 +90,13 @@ for b in $BLENDERS; do
 	try "$V: --blender-objects: linked duplicates sharing the organ's mesh, run twice" \
 		blend "$D/artist.blend" --python "$OUT/head-obj.py" --python "$OUT/head-obj.py" \
 		--python tests/blender/check.py -- "$OUT/head.csv" Head objects
-	cp "$OUT/blender.log" "$D/objects.log"
-	assert "Blender exit 0" '[ $rc -eq 0 ]'
-	assert "all checks" '! grep -q "check: FAILED" $D/objects.log && [ $(grep -c "check: ok" $D/objects.log) -ge 6 ]'
+	checked objects 6
 	end
 
 	try "$V: in an empty file placeholders stand in for every organ" \
 		blend --factory-startup --python "$OUT/bare.py" --python "$OUT/bare.py" \
 		--python tests/blender/check.py -- "$OUT/bare.csv" Head instances
-	cp "$OUT/blender.log" "$D/bare.log"
-	assert "Blender exit 0" '[ $rc -eq 0 ]'
-	assert "all checks" '! grep -q "check: FAILED" $D/bare.log && [ $(grep -c "check: ok" $D/bare.log) -ge 5 ]'
+	checked bare 5
 	end
 
 	# Every example scene, in one Blender process.
