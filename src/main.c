@@ -122,7 +122,7 @@ writers_with(int which)
 	return buf;
 }
 
-/* 0 to go on, -1 to exit 0 at once (--help), or a status to exit with. */
+/* Long options beyond the writers' own: output, template, arrays, ... */
 enum { OPT_WRITER = 256, NOPTIONS = 6 };
 
 static int
@@ -218,6 +218,7 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 	return 0;
 }
 
+/* 0 to go on, -1 to exit 0 at once (--help), or a status to exit with. */
 static int
 parse_args(int argc, char *argv[], struct args *a)
 {

@@ -26,7 +26,8 @@ struct model {
 					   (planar), not the first */
 };
 
-/* Every model, NULL-terminated (models.c). */
+/* Every model, NULL-terminated (models.c); at most MODELS_MAX. */
+#define MODELS_MAX	16
 extern const struct model *const models[];
 
 const struct model *model_find(const char *name);

@@ -489,18 +489,27 @@ load_ranges(struct load *L, const config_setting_t *s, const char *path,
 	return 0;
 }
 
+/* The registry's names, NULL-terminated, as a word list for set_choice. */
+static void
+model_names(const char *words[MODELS_MAX + 1])
+{
+	size_t n = 0;
+
+	for (const struct model *const *m = models; *m != NULL &&
+	    n < MODELS_MAX; m++)
+		words[n++] = (*m)->name;
+	words[n] = NULL;
+}
+
 /* model = "...": one of the registry's names. */
 static int
 set_model(struct load *L, const config_setting_t *s, const char *path,
     const struct model **dst)
 {
-	const char *words[16];
-	size_t n = 0;
+	const char *words[MODELS_MAX + 1];
 	int i;
 
-	for (const struct model *const *m = models; *m != NULL && n < 15; m++)
-		words[n++] = (*m)->name;
-	words[n] = NULL;
+	model_names(words);
 	if (set_choice(L, s, path, words, &i) < 0)
 		return -1;
 	*dst = models[i];
@@ -681,13 +690,10 @@ load_root(struct load *L, const config_setting_t *root)
 	const struct model *model;
 
 	if (m == NULL) {
-		const char *words[16];
+		const char *words[MODELS_MAX + 1];
 		char list[256];
-		size_t n = 0;
 
-		for (const struct model *const *p = models; *p && n < 15; p++)
-			words[n++] = (*p)->name;
-		words[n] = NULL;
+		model_names(words);
 		words_join(list, sizeof(list), words);
 		diag(ST_SCENE, L->file, 1, 0, "missing setting 'model' "
 		    "(one of: %s)", list);
