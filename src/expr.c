@@ -83,6 +83,7 @@ struct expr {
 struct parser {
 	const char	*src, *p;
 	unsigned	 vars;
+	const struct expr_const *consts;	/* or NULL */
 	int		 depth;
 	int		 sp, spmax;	/* stack height as emitted */
 	size_t		 barrier;	/* a jump lands here: no fusing */
@@ -273,6 +274,11 @@ name(struct parser *P)
 		emit(P, OP_CONST, 0, GOLDEN_ANGLE, 1);
 		return;
 	}
+	for (const struct expr_const *c = P->consts; c && c->name; c++)
+		if (strlen(c->name) == len && strncmp(c->name, at, len) == 0) {
+			emit(P, OP_CONST, 0, c->value, 1);
+			return;
+		}
 	for (int v = 0; v < V__MAX; v++)
 		if (strlen(var_names[v]) == len &&
 		    strncmp(var_names[v], at, len) == 0) {
@@ -467,7 +473,14 @@ expr_constant(double v)
 struct expr *
 expr_compile(const char *src, unsigned vars, struct expr_error *err)
 {
-	struct parser P = { src, src, vars, 0, 0, 0, 0, NULL, err };
+	return expr_compile_with(src, vars, NULL, err);
+}
+
+struct expr *
+expr_compile_with(const char *src, unsigned vars,
+    const struct expr_const *consts, struct expr_error *err)
+{
+	struct parser P = { src, src, vars, consts, 0, 0, 0, 0, NULL, err };
 	struct expr_env env = { { 0 }, 0, 0 };
 	double v;
 

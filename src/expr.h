@@ -40,10 +40,22 @@ enum expr_status {
 	EXPR_NOTFINITE		/* the result is NaN or infinite */
 };
 
+/*
+ * A name that stands for a number fixed while a scene is loaded: the
+ * frame's f and F.  Lists of them end with a NULL name.
+ */
+struct expr_const {
+	const char	*name;
+	double		 value;
+};
+
 struct expr;
 
 struct expr	*expr_compile(const char *src, unsigned vars,
 		    struct expr_error *);
+/* The same, where the names in consts are those numbers. */
+struct expr	*expr_compile_with(const char *src, unsigned vars,
+		    const struct expr_const *consts, struct expr_error *);
 struct expr	*expr_constant(double);
 int		 expr_is_constant(const struct expr *, double *value);
 /* The variables it reads, as EXPR_VAR() bits. */

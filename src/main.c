@@ -10,6 +10,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "compound.h"
 #include "diag.h"
 #include "mem.h"
 #include "phyllo.h"
@@ -65,7 +66,11 @@ struct args {
 	const char	*template;	/* --template, or NULL */
 	int		 arrays;	/* --arrays */
 	int		 objects;	/* --blender-objects */
+	int		 flatten;	/* --flatten */
+	int		 frames;	/* --frames N, or 0 */
 };
+
+#define FRAMES_MAX	100000
 
 static void
 usage(FILE *fp)
@@ -75,7 +80,8 @@ usage(FILE *fp)
 		fprintf(fp, "%s--%s", w == writers ? "" : " | ", w->name);
 	fputs(") [-o FILE]\n"
 	    "                     [--template FILE] [--arrays] "
-	    "[--blender-objects] SCENE.cfg\n"
+	    "[--blender-objects]\n"
+	    "                     [--flatten] [--frames N] SCENE.cfg\n"
 	    "       phyllo-export --help | --version\n", fp);
 }
 
@@ -96,6 +102,12 @@ help(void)
 	    "(pov-arrays.tmpl)\n"
 	    "  --blender-objects  --blender: one linked duplicate per organ "
 	    "instead of instances\n"
+	    "  --flatten      --csv: every leaf organ of a compound structure, "
+	    "in the world\n"
+	    "  --frames N     N frames, f = 0 .. 1 and F = 1 .. N in the scene; "
+	    "-o FILE%03d\n"
+	    "                 names one file a frame (--blender: one script "
+	    "animating them)\n"
 	    "  -h, --help     show this help\n"
 	    "  -V, --version  show the version\n\n"
 	    "Models (model = \"NAME\"; in the scene file):");
@@ -104,7 +116,7 @@ help(void)
 	puts("\nSee phyllo-export(1) and phyllo-export(5).");
 }
 
-enum { WITH_ARRAYS, WITH_OBJECTS };
+enum { WITH_ARRAYS, WITH_OBJECTS, WITH_FLATTEN };
 
 /* "--pov" or "--pov or --blender": the formats an option goes with. */
 static const char *
@@ -116,14 +128,85 @@ writers_with(int which)
 	buf[0] = '\0';
 	for (const struct writer *w = writers; w->name != NULL; w++)
 		if (which == WITH_ARRAYS ? w->arrays_tmpl != NULL :
-		    (w->opts & TO_OBJECTS) != 0)
+		    (w->opts & (which == WITH_OBJECTS ? TO_OBJECTS :
+		    TO_FLATTEN)) != 0)
 			len += (size_t)snprintf(buf + len, sizeof(buf) - len,
 			    "%s--%s", len ? " or " : "", w->name);
 	return buf;
 }
 
+/* --frames N: a count from 1 to FRAMES_MAX, or 0 after a diagnostic. */
+static int
+frames_arg(const char *arg)
+{
+	char *end;
+	long n;
+
+	errno = 0;
+	n = strtol(arg, &end, 10);
+	if (errno != 0 || end == arg || *end != '\0' || n < 1 ||
+	    n > FRAMES_MAX) {
+		diag(ST_USAGE, NULL, 0, 0, "--frames %s: give a whole number "
+		    "from 1 to %d", arg, FRAMES_MAX);
+		return 0;
+	}
+	return (int)n;
+}
+
+/*
+ * The file of frame F: pattern with its one %d (flags 0, a width) made
+ * F, and %% made %.  Our own expansion, so -o is never a printf format.
+ * buf NULL: only check the pattern.  0, or -1 after a diagnostic.
+ */
+static int
+frame_path(const char *pattern, int F, char *buf, size_t sz)
+{
+	static const char *const need = "--frames writes one file a frame: "
+	    "-o needs one %d in the name (head%03d.inc)";
+	char tmp[4096];
+	size_t len = 0;
+	int conversions = 0;
+
+	if (pattern == NULL) {
+		diag(ST_USAGE, NULL, 0, 0, "%s, not standard output", need);
+		return -1;
+	}
+	for (const char *p = pattern; *p != '\0'; p++) {
+		int zero = 0, width = 0;
+
+		if (*p != '%' || p[1] == '%') {
+			if (len + 1 < sizeof(tmp))
+				tmp[len++] = *p;
+			p += *p == '%';
+			continue;
+		}
+		if (*++p == '0')
+			zero = *p++ == '0';
+		while (*p >= '0' && *p <= '9' && width < 100)
+			width = width * 10 + (*p++ - '0');
+		if (*p != 'd' || conversions++ > 0) {
+			diag(ST_USAGE, NULL, 0, 0, "-o %s: %s", pattern, need);
+			return -1;
+		}
+		len += (size_t)snprintf(tmp + len, len < sizeof(tmp) ?
+		    sizeof(tmp) - len : 0, zero ? "%0*d" : "%*d", width, F);
+	}
+	if (conversions == 0) {
+		diag(ST_USAGE, NULL, 0, 0, "-o %s: %s", pattern, need);
+		return -1;
+	}
+	if (len >= sizeof(tmp)) {
+		diag(ST_USAGE, NULL, 0, 0, "-o %s: file name too long", pattern);
+		return -1;
+	}
+	tmp[len] = '\0';
+	if (buf != NULL)
+		snprintf(buf, sz, "%s", tmp);
+	return 0;
+}
+
 /* Long options beyond the writers' own: output, template, arrays, ... */
-enum { OPT_WRITER = 256, NOPTIONS = 6 };
+enum { OPT_WRITER = 256, NOPTIONS = 8 };
 
 static int
 parse(int argc, char *argv[], struct args *a, struct option *longopts)
@@ -140,6 +223,9 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 	longopts[n++] = (struct option){ "arrays", no_argument, NULL, 'a' };
 	longopts[n++] = (struct option){ "blender-objects", no_argument, NULL,
 	    'b' };
+	longopts[n++] = (struct option){ "flatten", no_argument, NULL, 'f' };
+	longopts[n++] = (struct option){ "frames", required_argument, NULL,
+	    'F' };
 	longopts[n++] = (struct option){ "help", no_argument, NULL, 'h' };
 	longopts[n++] = (struct option){ "version", no_argument, NULL, 'V' };
 	longopts[n] = (struct option){ NULL, 0, NULL, 0 };
@@ -164,6 +250,13 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 			break;
 		case 'b':
 			a->objects = 1;
+			break;
+		case 'f':
+			a->flatten = 1;
+			break;
+		case 'F':
+			if ((a->frames = frames_arg(optarg)) == 0)
+				return ST_USAGE;
 			break;
 		case ':':
 			diag(ST_USAGE, NULL, 0, 0, "option %s needs an argument",
@@ -209,12 +302,25 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 		    writers_with(WITH_OBJECTS));
 		return ST_USAGE;
 	}
+	if (a->flatten && !(a->writer->opts & TO_FLATTEN)) {
+		diag(ST_USAGE, NULL, 0, 0, "--flatten goes with %s",
+		    writers_with(WITH_FLATTEN));
+		return ST_USAGE;
+	}
+	if (a->frames && !(a->writer->opts & TO_ANIMATE) &&
+	    frame_path(a->output, 1, NULL, 0) != 0)
+		return ST_USAGE;
 	if (a->template != NULL && a->arrays) {
 		diag(ST_USAGE, NULL, 0, 0, "choose one of --template and "
 		    "--arrays");
 		return ST_USAGE;
 	}
 	a->scene = argv[optind];
+	if (a->frames && strcmp(a->scene, "-") == 0) {
+		diag(ST_USAGE, NULL, 0, 0, "--frames reads the scene once a "
+		    "frame: give a file, not standard input");
+		return ST_USAGE;
+	}
 	return 0;
 }
 
@@ -250,51 +356,120 @@ load_template(const struct args *a)
 	return tmpl_builtin(name, a->writer->vars);
 }
 
-/* Write the result; on any failure -o's target is left as it was. */
-static void
-write_result(const struct args *a, const struct tmpl *t,
-    const struct result *res)
+/* The structures a template writes: all of them, or the main alone. */
+static const struct result **
+structures(const struct tmpl *t, const struct compound *c, size_t nc,
+    size_t *n)
 {
-	struct sink s;
-	FILE *fp = output_open(a->output);
+	const struct result **all;
+	size_t total = 0;
 
-	if (fp == NULL)
-		return;
-	sink_init(&s, fp);
-	if (t != NULL)
-		tmpl_write(t, &s, res, a->objects ? TO_OBJECTS : 0);
-	else
-		a->writer->write(&s, res);
-	if (sink_finish(&s) != 0) {
-		diag(ST_SYSTEM, a->output ? a->output : "<stdout>", 0, 0,
-		    "%s", strerror(errno));
-		output_abort();
-	} else
-		output_commit();
-	sink_free(&s);
+	for (size_t k = 0; k < nc; k++)
+		total += c[k].n;
+	all = xcalloc(total, sizeof(*all));
+	*n = 0;
+	if (t != NULL && !tmpl_structures(t)) {
+		if (total > nc)
+			diag(ST_OK, NULL, 0, 0, "the template has no "
+			    "@@structures block: the parts of the structure "
+			    "are written as placeholders");
+		for (size_t k = 0; k < nc; k++)
+			all[(*n)++] = compound_main(&c[k]);
+		return all;
+	}
+	for (size_t k = 0; k < nc; k++)
+		for (size_t i = 0; i < c[k].n; i++)
+			all[(*n)++] = &c[k].parts[i]->res;
+	return all;
 }
 
-/* Everything that can fail on the input, before any output. */
+/*
+ * Write frames c[0 .. nc-1] to path (NULL: stdout); the file stays a
+ * temporary until output_commit().  0, or -1 after a diagnostic.
+ */
 static int
-prepare(const struct args *a, struct scene *sc, struct tmpl **t,
-    struct result *res)
+write_file(const struct args *a, const struct tmpl *t, const char *path,
+    const struct compound *c, size_t nc)
 {
-	if (scene_load(sc, a->scene) != 0)
+	unsigned opts = (a->objects ? TO_OBJECTS : 0) |
+	    (a->flatten ? TO_FLATTEN : 0);
+	struct sink s;
+	FILE *fp = output_open(path);
+	int rc = 0;
+
+	if (fp == NULL)
 		return -1;
-	if (a->writer->check != NULL && a->writer->check(sc) != 0)
+	sink_init(&s, fp);
+	if (t != NULL) {
+		size_t n;
+		const struct result **all = structures(t, c, nc, &n);
+
+		tmpl_write(t, &s, all, n, opts);
+		free(all);
+	} else
+		a->writer->write(&s, compound_main(&c[nc - 1]), opts);
+	if (sink_finish(&s) != 0) {
+		diag(ST_SYSTEM, path ? path : "<stdout>", 0, 0, "%s",
+		    strerror(errno));
+		output_abort();
+		rc = -1;
+	} else
+		rc = output_close();
+	sink_free(&s);
+	return rc;
+}
+
+/* Load and run frame fr of the scene, with everything it includes. */
+static int
+make_frame(const struct args *a, struct compound *c, const struct frame *fr)
+{
+	if (compound_load(c, a->scene, fr, a->writer->check) != 0)
 		return -1;
-	if (a->writer->tmpl != NULL && (*t = load_template(a)) == NULL)
-		return -1;
-	return model_run(sc, res);
+	return compound_run(c, fr);
+}
+
+/*
+ * Every frame: one file each, or (a format that animates) all in one.
+ * Nothing is put in place unless every frame was made and written.
+ */
+static void
+run(const struct args *a, const struct tmpl *t)
+{
+	int nframes = a->frames ? a->frames : 1;
+	int together = a->frames && (a->writer->opts & TO_ANIMATE);
+	struct compound *c = xcalloc((size_t)nframes, sizeof(*c));
+	char path[4096];
+	int rc = 0, made = 0;
+
+	for (int F = 1; F <= nframes && rc == 0; F++) {
+		struct frame fr = { F, nframes };
+		struct compound *cf = &c[together ? F - 1 : 0];
+
+		rc = make_frame(a, cf, a->frames ? &fr : NULL);
+		made++;
+		if (rc == 0 && !together)
+			rc = a->frames && frame_path(a->output, F, path,
+			    sizeof(path)) != 0 ? -1 : write_file(a, t,
+			    a->frames ? path : a->output, cf, 1);
+		if (!together)
+			compound_free(cf);
+	}
+	if (rc == 0 && together)
+		rc = write_file(a, t, a->output, c, (size_t)nframes);
+	if (rc == 0)
+		output_commit();
+	else
+		output_abort();
+	for (int k = 0; together && k < made; k++)
+		compound_free(&c[k]);
+	free(c);
 }
 
 int
 main(int argc, char *argv[])
 {
-	struct args a = { NULL, NULL, NULL, NULL, 0, 0 };
-	struct scene sc;
+	struct args a = { NULL, NULL, NULL, NULL, 0, 0, 0, 0 };
 	struct tmpl *t = NULL;
-	struct result res = { 0 };
 	int st;
 
 	if ((st = parse_args(argc, argv, &a)) < 0) {
@@ -310,10 +485,8 @@ main(int argc, char *argv[])
 		clock_gettime(CLOCK_MONOTONIC, &progress_t0);
 		model_progress = progress;
 	}
-	if (prepare(&a, &sc, &t, &res) == 0)
-		write_result(&a, t, &res);
+	if (a.writer->tmpl == NULL || (t = load_template(&a)) != NULL)
+		run(&a, t);
 	tmpl_free(t);
-	result_free(&res);
-	scene_free(&sc);
 	return diag_status();
 }

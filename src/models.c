@@ -48,6 +48,9 @@ model_run(const struct scene *sc, struct result *res)
 		snprintf(res->objects[i], sizeof(res->objects[i]), "%s",
 		    sc->objects[i]);
 	res->nobjects = sc->nobjects;
+	res->frame = sc->frame_no;
+	res->frames = 1;
+	res->frame_f = sc->frame_f;
 	if (!divergence_rays(res->divergence, res->count, &res->rays_p,
 	    &res->rays))
 		res->rays = res->rays_p = 0;

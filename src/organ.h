@@ -60,6 +60,15 @@ struct result {
 	char		*source;	/* the scene file as named, owned */
 	char		(*objects)[NAME_LEN + 1];	/* owned */
 	size_t		 nobjects;
+	/*
+	 * A compound structure (compound.h): for each object, the result
+	 * it is made of when it is a part (a sub-scene), else NULL.  The
+	 * array is owned, the parts are not.  NULL when nothing is a part.
+	 */
+	const struct result **sub;
+	int		 part;		/* this is a part, named for its object */
+	int		 frame, frames;	/* F of how many (--frames); 1 of 1 */
+	double		 frame_f;	/* f: 0 .. 1 over the frames */
 	struct info_item info[INFO_MAX];
 	int		 ninfo;
 };

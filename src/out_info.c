@@ -59,8 +59,9 @@ convergents(struct sink *s, const struct result *r)
 }
 
 void
-info_write(struct sink *s, const struct result *r)
+info_write(struct sink *s, const struct result *r, unsigned opts)
 {
+	(void)opts;
 	double box[6] = { HUGE_VAL, HUGE_VAL, HUGE_VAL,
 	    -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
 	double count = (double)r->count;

@@ -148,8 +148,9 @@ text(struct sink *s, double x, double y, double size, const char *colour,
 }
 
 void
-svg_write(struct sink *s, const struct result *r)
+svg_write(struct sink *s, const struct result *r, unsigned opts)
 {
+	(void)opts;
 	static const char *const fam[2] = { "#c03030", "#2060c0" };
 	double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
 	double pad, w, h, em, rmed = 0;

@@ -2,10 +2,12 @@
  * output.c - open the output: standard output, or -o FILE.  A regular
  * FILE is written as a temporary file beside it and renamed over it
  * only when everything was written, so a failed or interrupted run never
- * leaves a damaged or half-written file.  Devices and pipes named with
- * -o (/dev/stdout, /dev/full) are written directly.
+ * leaves a damaged or half-written file.  --frames writes several files
+ * the same way: all of them are renamed into place at the end, or none.
+ * Devices and pipes named with -o (/dev/stdout, /dev/full) are written
+ * directly.
  *
- * The temporary file is removed on error, on exit() from anywhere (out
+ * Temporary files are removed on error, on exit() from anywhere (out
  * of memory) and on SIGINT, SIGTERM, SIGHUP and SIGPIPE.
  */
 #include <errno.h>
@@ -19,28 +21,36 @@
 #include <unistd.h>
 
 #include "diag.h"
+#include "mem.h"
 #include "output.h"
 
+/* A file written but not yet in place. */
+struct pending {
+	char	 tmp[PATH_MAX];
+	char	*target;
+};
+
 static FILE *out;
-static const char *target;		/* renamed into place; or NULL */
 static const char *display = "<stdout>";	/* for messages */
-static char tmp[PATH_MAX];		/* non-empty while it exists */
-static volatile sig_atomic_t have_tmp;
+static struct pending *pend;
+static volatile sig_atomic_t npend;	/* temporaries that exist */
+static size_t cap;
 
 static void
-remove_tmp(void)
+remove_tmps(void)
 {
-	if (have_tmp) {
-		have_tmp = 0;
-		unlink(tmp);
+	while (npend > 0) {
+		npend--;
+		unlink(pend[npend].tmp);
+		free(pend[npend].target);
 	}
 }
 
 static void
 on_signal(int sig)
 {
-	if (have_tmp)
-		unlink(tmp);
+	for (sig_atomic_t i = 0; i < npend; i++)
+		unlink(pend[i].tmp);
 	signal(sig, SIG_DFL);
 	raise(sig);
 }
@@ -49,7 +59,11 @@ static void
 catch_signals(void)
 {
 	static const int sigs[] = { SIGINT, SIGTERM, SIGHUP, SIGPIPE };
+	static int done;
 
+	if (done++)
+		return;
+	atexit(remove_tmps);
 	for (size_t i = 0; i < sizeof(sigs) / sizeof(sigs[0]); i++)
 		signal(sigs[i], on_signal);
 }
@@ -57,37 +71,45 @@ catch_signals(void)
 FILE *
 output_open(const char *path)
 {
+	struct pending *p;
 	struct stat st;
 	const char *slash;
 	mode_t mask;
 	int fd, dirlen;
 
-	target = path;
-	if (path != NULL)
-		display = path;
 	if (path == NULL)
 		return out = stdout;
+	display = path;
 	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-		target = NULL;
 		if ((out = fopen(path, "w")) == NULL)
 			diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));
 		return out;
 	}
+	catch_signals();
+	if ((size_t)npend == cap) {
+		/* Grown with signals held: the handler walks pend. */
+		sigset_t all, old;
+
+		sigfillset(&all);
+		sigprocmask(SIG_BLOCK, &all, &old);
+		pend = xreallocarray(pend, cap = cap * 2 + 4, sizeof(*pend));
+		sigprocmask(SIG_SETMASK, &old, NULL);
+	}
+	p = &pend[npend];
 	slash = strrchr(path, '/');
 	dirlen = slash != NULL ? (int)(slash - path + 1) : 0;
-	if (snprintf(tmp, sizeof(tmp), "%.*s.%s.XXXXXX", dirlen, path,
-	    path + dirlen) >= (int)sizeof(tmp)) {
+	if (snprintf(p->tmp, sizeof(p->tmp), "%.*s.%s.XXXXXX", dirlen, path,
+	    path + dirlen) >= (int)sizeof(p->tmp)) {
 		diag(ST_SYSTEM, path, 0, 0, "file name too long");
 		return NULL;
 	}
-	atexit(remove_tmp);
-	catch_signals();
-	if ((fd = mkstemp(tmp)) < 0) {
+	if ((fd = mkstemp(p->tmp)) < 0) {
 		diag(ST_SYSTEM, path, 0, 0, "cannot create a file beside "
 		    "it: %s", strerror(errno));
 		return NULL;
 	}
-	have_tmp = 1;
+	p->target = xstrdup(path);
+	npend++;
 	/* mkstemp makes 0600; give what a plain create would. */
 	mask = umask(0);
 	umask(mask);
@@ -95,15 +117,15 @@ output_open(const char *path)
 	    (out = fdopen(fd, "w")) == NULL) {
 		diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));
 		close(fd);
-		remove_tmp();
+		output_abort();
 		return NULL;
 	}
 	return out;
 }
 
-/* Close and put the file in place; 0, or -1 after a diagnostic. */
+/* Close the file being written, keeping it for output_commit(). */
 int
-output_commit(void)
+output_close(void)
 {
 	int rc = 0;
 
@@ -114,22 +136,43 @@ output_commit(void)
 	if (out != stdout && fclose(out) != 0)
 		rc = -1;
 	out = NULL;
-	if (rc == 0 && target != NULL && rename(tmp, target) != 0)
-		rc = -1;
 	if (rc != 0) {
 		diag(ST_SYSTEM, display, 0, 0, "%s", strerror(errno));
-		remove_tmp();
-		return -1;
+		output_abort();
 	}
-	have_tmp = 0;
+	return rc;
+}
+
+/* Put every file written in place; 0, or -1 after a diagnostic. */
+int
+output_commit(void)
+{
+	if (out != NULL && output_close() != 0)
+		return -1;
+	for (sig_atomic_t i = 0; i < npend; i++)
+		if (rename(pend[i].tmp, pend[i].target) != 0) {
+			diag(ST_SYSTEM, pend[i].target, 0, 0, "%s",
+			    strerror(errno));
+			output_abort();
+			return -1;
+		}
+	while (npend > 0)
+		free(pend[--npend].target);
+	free(pend);
+	pend = NULL;
+	cap = 0;
 	return 0;
 }
 
+/* Close and remove whatever was written: the targets stay as they were. */
 void
 output_abort(void)
 {
 	if (out != NULL && out != stdout)
 		fclose(out);
 	out = NULL;
-	remove_tmp();
+	remove_tmps();
+	free(pend);
+	pend = NULL;
+	cap = 0;
 }

@@ -19,6 +19,7 @@ result_free(struct result *r)
 	free(r->organs);
 	free(r->source);
 	free(r->objects);
+	free(r->sub);
 	*r = (struct result){0};
 }
 

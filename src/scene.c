@@ -24,6 +24,7 @@
 struct load {
 	struct scene	*sc;
 	const char	*file;
+	struct expr_const consts[3];	/* f and F, for every expression */
 };
 
 
@@ -127,6 +128,43 @@ in_range(const struct row *r, double v)
 	return v <= r->hi;
 }
 
+/*
+ * A number given as an expression string: it may read only the frame's
+ * f and F, so it is a constant by the time it is compiled.  An integer
+ * setting takes the nearest integer, so "100 + 900 * f" counts smoothly.
+ */
+static int
+set_number_expr(struct load *L, const config_setting_t *s,
+    const struct row *r, const char *path, void *dst)
+{
+	struct expr_error err;
+	struct expr *e = expr_compile_with(config_setting_get_string(s), 0,
+	    L->consts, &err);
+	char range[128];
+	double v = 0;
+
+	if (e == NULL) {
+		diag(ST_SCENE, file_of(L, s), line_of(s), err.col, "%s: %s%s",
+		    path, err.msg, strstr(err.msg, "variable") ?
+		    " (a number's expression may use only f and F)" : "");
+		return -1;
+	}
+	expr_is_constant(e, &v);
+	expr_free(e);
+	if (r->type == T_INT || r->type == T_INTS)
+		v = floor(v + 0.5);
+	if (!in_range(r, v) || fabs(v) > 9007199254740992.0) {
+		range_words(r, range, sizeof(range));
+		err_at(L, s, "%s %.15g is out of range: %s", path, v, range);
+		return -1;
+	}
+	if (r->type == T_INT || r->type == T_INTS)
+		*(long long *)dst = (long long)v;
+	else
+		*(double *)dst = v;
+	return 0;
+}
+
 static int
 set_number(struct load *L, const config_setting_t *s, const struct row *r,
     const char *path, void *dst)
@@ -135,6 +173,8 @@ set_number(struct load *L, const config_setting_t *s, const struct row *r,
 	int type = config_setting_type(s);
 	double v;
 
+	if (type == CONFIG_TYPE_STRING)
+		return set_number_expr(L, s, r, path, dst);
 	if (type != CONFIG_TYPE_INT && type != CONFIG_TYPE_INT64 &&
 	    type != CONFIG_TYPE_FLOAT) {
 		err_at(L, s, "%s must be %s", path,
@@ -330,7 +370,8 @@ set_expr(struct load *L, const config_setting_t *s, const struct row *r,
 		    path);
 		return -1;
 	}
-	if ((dst->e = expr_compile(src, r->vars, &err)) == NULL) {
+	if ((dst->e = expr_compile_with(src, r->vars, L->consts,
+	    &err)) == NULL) {
 		diag(ST_SCENE, file_of(L, s), line_of(s), err.col, "%s: %s",
 		    path, err.msg);
 		return -1;
@@ -366,6 +407,43 @@ set_names(struct load *L, const config_setting_t *s, const char *path,
 
 		if (set_ident(L, e, path, rg->names[i]) < 0)
 			return -1;
+	}
+	return 0;
+}
+
+/* A scene file's name, or an array of them: what each variant is made of. */
+static int
+set_files(struct load *L, const config_setting_t *s, const char *path,
+    struct organ_range *rg)
+{
+	int list = config_setting_type(s) == CONFIG_TYPE_ARRAY ||
+	    config_setting_type(s) == CONFIG_TYPE_LIST;
+	int n = list ? config_setting_length(s) : 1;
+
+	if (!list && config_setting_type(s) != CONFIG_TYPE_STRING) {
+		err_at(L, s, "%s must be a file name or an array of them",
+		    path);
+		return -1;
+	}
+	if (n == 0 || n > VARIANTS_MAX) {
+		err_at(L, s, "%s must list 1 to %d files, not %d", path,
+		    VARIANTS_MAX, n);
+		return -1;
+	}
+	rg->scenes = xcalloc((size_t)n, sizeof(*rg->scenes));
+	rg->nscenes = (size_t)n;
+	for (int i = 0; i < n; i++) {
+		const config_setting_t *e = list ?
+		    config_setting_get_elem(s, (unsigned)i) : s;
+		const char *v = config_setting_get_string(e);
+
+		if (v == NULL || *v == '\0' || strlen(v) > SCENE_PATH_MAX) {
+			err_at(L, e, "%s must be %s", path, v == NULL ?
+			    "a file name in quotes" : *v == '\0' ?
+			    "a file name, not \"\"" : "a shorter file name");
+			return -1;
+		}
+		rg->scenes[i] = xstrdup(v);
 	}
 	return 0;
 }
@@ -485,6 +563,12 @@ load_ranges(struct load *L, const config_setting_t *s, const char *path,
 			strcpy(rg->names[0], "Organ");
 			rg->nnames = 1;
 		}
+		if (rg->scenes != NULL && rg->nscenes != rg->nnames) {
+			diag(ST_SCENE, L->file, rg->given[RG_SCENE], 0,
+			    "%s.scene lists %zu files for %zu objects: one "
+			    "each", path, rg->nscenes, rg->nnames);
+			return -1;
+		}
 	}
 	return 0;
 }
@@ -543,6 +627,8 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 		return set_names(L, s, path, base);
 	case T_WEIGHTS:
 		return set_weights(L, s, r, path, base);
+	case T_FILES:
+		return set_files(L, s, path, base);
 	case T_INTS:
 		return set_ints(L, s, r, path, dst);
 	case T_POINTS:
@@ -641,6 +727,13 @@ name_from_file(char *dst, const char *file)
 	dst[len] = '\0';
 }
 
+/* Whether two entries' scene files for one object agree (NULL: none). */
+static int
+same_scene(const char *a, const char *b)
+{
+	return a == NULL || b == NULL ? a == b : strcmp(a, b) == 0;
+}
+
 /*
  * Collect the distinct organ object names and number the variants.  An
  * object may not carry the scene's name: both name things in one
@@ -656,6 +749,8 @@ collect_objects(struct load *L)
 	for (size_t i = 0; i < sc->nranges; i++)
 		total += sc->ranges[i].nnames;
 	sc->objects = xcalloc(total + 1, sizeof(*sc->objects));
+	sc->object_scene = xcalloc(total + 1, sizeof(*sc->object_scene));
+	sc->object_line = xcalloc(total + 1, sizeof(*sc->object_line));
 	for (size_t i = 0; i < sc->nranges; i++) {
 		struct organ_range *rg = &sc->ranges[i];
 
@@ -672,8 +767,21 @@ collect_objects(struct load *L)
 			for (j = 0; j < sc->nobjects; j++)
 				if (strcmp(sc->objects[j], rg->names[k]) == 0)
 					break;
-			if (j == sc->nobjects)
-				sc->objects[sc->nobjects++] = rg->names[k];
+			if (j == sc->nobjects) {
+				sc->objects[sc->nobjects] = rg->names[k];
+				sc->object_scene[sc->nobjects] = rg->scenes ?
+				    rg->scenes[k] : NULL;
+				sc->object_line[sc->nobjects++] = rg->at.line;
+			} else if (!same_scene(sc->object_scene[j],
+			    rg->scenes ? rg->scenes[k] : NULL)) {
+				diag(ST_SCENE, L->file, rg->at.line, 0, "organ "
+				    "object \"%s\" is %s here but %s on line "
+				    "%d: one name, one thing", rg->names[k],
+				    rg->scenes ? "a scene" : "not a scene",
+				    sc->object_scene[j] ? "a scene" :
+				    "not a scene", sc->object_line[j]);
+				return -1;
+			}
 			rg->ids[k] = (unsigned)j;
 		}
 	}
@@ -719,12 +827,26 @@ int
 scene_load_buffer(struct scene *sc, const char *file, const char *text,
     size_t len)
 {
-	struct load L = { sc, file };
+	return scene_load_buffer_frame(sc, file, text, len, NULL);
+}
+
+int
+scene_load_buffer_frame(struct scene *sc, const char *file,
+    const char *text, size_t len, const struct frame *fr)
+{
+	struct load L = { sc, file, { { "f", 0 }, { "F", 1 }, { NULL, 0 } } };
 	config_t cfg;
 	char *ready;
 	int rc = -1, nul_line;
 
 	*sc = (struct scene){ .file = file };
+	if (fr != NULL) {
+		L.consts[0].value = fr->count > 1 ?
+		    (double)(fr->number - 1) / (fr->count - 1) : 0;
+		L.consts[1].value = fr->number;
+	}
+	sc->frame_f = L.consts[0].value;
+	sc->frame_no = (int)L.consts[1].value;
 	set_defaults(&scene_table, sc);
 
 	if ((ready = cfgtext_prepare(text, len, &nul_line)) == NULL) {
@@ -754,9 +876,15 @@ scene_load_buffer(struct scene *sc, const char *file, const char *text,
 	return rc;
 }
 
-/* Load from a path, "-" meaning standard input. */
 int
 scene_load(struct scene *sc, const char *path)
+{
+	return scene_load_frame(sc, path, NULL);
+}
+
+/* Load from a path, "-" meaning standard input. */
+int
+scene_load_frame(struct scene *sc, const char *path, const struct frame *fr)
 {
 	const char *file = strcmp(path, "-") == 0 ? "<stdin>" : path;
 	FILE *fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
@@ -790,7 +918,7 @@ scene_load(struct scene *sc, const char *path)
 	if (fp != stdin)
 		fclose(fp);
 	text[len] = '\0';
-	rc = scene_load_buffer(sc, file, text, len);
+	rc = scene_load_buffer_frame(sc, file, text, len, fr);
 	free(text);
 	return rc;
 }
@@ -805,12 +933,17 @@ scene_free(struct scene *sc)
 		free(rg->names);
 		free(rg->ids);
 		free(rg->weights);
+		for (size_t k = 0; k < rg->nscenes; k++)
+			free(rg->scenes[k]);
+		free(rg->scenes);
 	}
 	free(sc->ranges);
 	if (sc->params != NULL)
 		free_settings(sc->model->settings, sc->params);
 	free(sc->params);
 	free(sc->objects);
+	free(sc->object_scene);
+	free(sc->object_line);
 	*sc = (struct scene){0};
 }
 

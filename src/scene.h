@@ -10,6 +10,7 @@
 
 #define COUNT_MAX	10000000	/* most organs a scene may ask for */
 #define SCENE_BYTES_MAX	(16L * 1024 * 1024)
+#define SCENE_PATH_MAX	1024		/* bytes in a sub-scene's file name */
 
 /* A number or expression setting, and where it was given. */
 struct expr_setting {
@@ -35,8 +36,8 @@ struct point_list {
 #define RANGES_MAX	1024		/* entries in organs */
 
 /* One entry of organs = ( ... ): an index range and what its organs are. */
-enum { RG_FROM, RG_TO, RG_OBJECT, RG_WEIGHTS, RG_SCALE, RG_ALTITUDE,
-	RG_TILT, RG_ROLL, RG__N };
+enum { RG_FROM, RG_TO, RG_OBJECT, RG_WEIGHTS, RG_SCENE, RG_SCALE,
+	RG_ALTITUDE, RG_TILT, RG_ROLL, RG__N };
 
 struct organ_range {
 	struct group_at	 at;
@@ -47,6 +48,8 @@ struct organ_range {
 	unsigned	*ids;		/* names as indices into objects */
 	double		*weights;	/* one per name, or NULL */
 	size_t		 nweights;
+	char		**scenes;	/* one per name, or NULL; owned */
+	size_t		 nscenes;
 	struct expr_setting scale, altitude, tilt, roll;
 };
 
@@ -70,7 +73,18 @@ struct scene {
 	struct organ_range *ranges;	/* owned */
 	size_t		 nranges;
 	const char	**objects;	/* distinct organ object names */
+	const char	**object_scene;	/* for each: its scene file as
+					   written, or NULL (a plain object) */
+	int		*object_line;	/* for each: the entry naming it */
 	size_t		 nobjects;
+	double		 frame_f;	/* f: 0 .. 1 over the frames */
+	int		 frame_no;	/* F: the frame's number, from 1 */
+};
+
+/* Which frame of how many a scene is loaded for: f and F in it. */
+struct frame {
+	int		 number;	/* F, 1 .. count */
+	int		 count;
 };
 
 extern const struct table scene_table;
@@ -78,6 +92,11 @@ extern const struct table scene_table;
 int	 scene_load(struct scene *, const char *path);
 int	 scene_load_buffer(struct scene *, const char *file,
 	    const char *text, size_t len);
+/* The same for a frame (NULL: frame 1 of 1, so f = 0 and F = 1). */
+int	 scene_load_frame(struct scene *, const char *path,
+	    const struct frame *);
+int	 scene_load_buffer_frame(struct scene *, const char *file,
+	    const char *text, size_t len, const struct frame *);
 void	 scene_free(struct scene *);
 void	 scene_error(const struct scene *, int line, const char *fmt, ...)
 #if defined(__GNUC__)

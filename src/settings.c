@@ -26,6 +26,9 @@ static const struct row range_rows[] = {
 	[RG_WEIGHTS] = { .name = "weights", .type = T_WEIGHTS, .lo = 0,
 	  .hi = HUGE_VAL, .defstr = "all 1",
 	  .doc = "relative frequency of each variant" },
+	[RG_SCENE] = { .name = "scene", .type = T_FILES, .defstr = "none",
+	  .doc = "a scene file making the object, relative to this one; "
+	  "an array: one per variant" },
 	[RG_SCALE] = { .name = "scale", .type = T_EXPR, .off = R(scale),
 	  .vars = EXPR_ALL, .defstr = "r", .doc = "scale of the organ model" },
 	[RG_ALTITUDE] = { .name = "altitude", .type = T_EXPR,
@@ -71,7 +74,7 @@ static const char *const type_names[] = {
 	[T_IDENT] = "identifier", [T_CHOICE] = "string",
 	[T_EXPR] = "expression", [T_NAMES] = "names", [T_WEIGHTS] = "numbers",
 	[T_INTS] = "integers", [T_POINTS] = "points", [T_RANGES] = "list",
-	[T_MODEL] = "string", [T_VEC3] = "numbers"
+	[T_MODEL] = "string", [T_VEC3] = "numbers", [T_FILES] = "files"
 };
 
 static void

@@ -24,7 +24,8 @@ enum type {
 	T_POINTS,	/* struct point_list: (x, y) pairs of numbers */
 	T_RANGES,	/* the organs list: entries described by sub */
 	T_MODEL,	/* the model's name, from the registry (model.h) */
-	T_VEC3		/* double[3]: [x, y, z] */
+	T_VEC3,		/* double[3]: [x, y, z] */
+	T_FILES		/* a file name or an array of them, one per variant */
 };
 
 #define F_LO_OPEN	0x01	/* lo itself is not allowed */

@@ -10,7 +10,12 @@
  *	@@end
  *	}
  *
- * Lines starting with @@ are directives (@@objects, @@organs, @@end, and
+ * A compound structure is written by a @@structures block, once for
+ * each of its structures (the parts first, so each is declared before
+ * it is used; frame by frame for --blender --frames), with @@part and
+ * @@main blocks written only for a part or only for the main one.
+ *
+ * Lines starting with @@ are directives (those blocks, @@end, and
  * @@# comments) and are not copied; "@@" within a line writes one "@";
  * any other "@" is copied as it is.  The template is parsed once and
  * every placeholder checked before anything is written.  Every value a
@@ -35,12 +40,22 @@
 
 enum seg_kind { SEG_TEXT, SEG_VAR, SEG_BEGIN, SEG_END };
 
+/* The blocks: three loops and two conditions. */
+enum block { B_STRUCTURES, B_OBJECTS, B_ORGANS, B_PART, B_MAIN };
+
+static const char *const block_words[] = {
+	[B_STRUCTURES] = "structures", [B_OBJECTS] = "objects",
+	[B_ORGANS] = "organs", [B_PART] = "part", [B_MAIN] = "main"
+};
+#define NBLOCKS	(sizeof(block_words) / sizeof(block_words[0]))
+#define NEST_MAX	4	/* structures > part > organs > main, at most */
+
 struct seg {
 	enum seg_kind		 kind;
 	const char		*text;		/* SEG_TEXT */
 	size_t			 len;
 	const struct tmpl_var	*var;		/* SEG_VAR */
-	int			 scope;		/* SEG_BEGIN: TS_OBJECT/ORGAN */
+	enum block		 block;		/* SEG_BEGIN */
 	size_t			 end;		/* SEG_BEGIN: its SEG_END */
 };
 
@@ -48,6 +63,14 @@ struct tmpl {
 	char		*text;		/* owned; segments point into it */
 	struct seg	*segs;
 	size_t		 nsegs, cap;
+	int		 structures;	/* it has a @@structures block */
+};
+
+/* The blocks open while parsing, outermost first. */
+struct open {
+	size_t		 seg[NEST_MAX];
+	int		 line[NEST_MAX];
+	int		 n;
 };
 
 const struct organ *
@@ -72,6 +95,14 @@ static void put_version(struct sink *s, const struct tmpl_ctx *c)
 { (void)c; sink_puts(s, VERSION); }
 static void put_object_count(struct sink *s, const struct tmpl_ctx *c)
 { sink_uint(s, c->r->nobjects); }
+static void put_frame(struct sink *s, const struct tmpl_ctx *c)
+{ sink_uint(s, (size_t)c->r->frame); }
+static void put_frames(struct sink *s, const struct tmpl_ctx *c)
+{ sink_uint(s, (size_t)c->r->frames); }
+static void put_frame_f(struct sink *s, const struct tmpl_ctx *c)
+{ sink_num(s, c->r->frame_f); }
+static void put_part(struct sink *s, const struct tmpl_ctx *c)
+{ sink_putc(s, c->r->part ? '1' : '0'); }
 
 /*
  * The scene file's base name, reduced to characters that are safe in
@@ -166,6 +197,10 @@ static const struct tmpl_var common[] = {
 	{ "VERSION", ANY, put_version },
 	{ "SCENE", ANY, put_scene },
 	{ "OBJECT_COUNT", ANY, put_object_count },
+	{ "FRAME", ANY, put_frame },
+	{ "FRAMES", ANY, put_frames },
+	{ "FRAME_F", ANY, put_frame_f },
+	{ "PART", ANY, put_part },
 	{ "OBJECT", ITEM, put_object },
 	{ "OBJECT_INDEX", ITEM, put_object_index },
 	{ "OBJECT_ORGANS", ITEM, put_object_organs },
@@ -228,54 +263,73 @@ text_add(struct tmpl *t, const char *p, size_t len)
 	last->len = len;
 }
 
-static const char *
-scope_words(int scope)
+/* The placeholders' scope inside the open blocks: the innermost loop's. */
+static int
+scope_of(const struct tmpl *t, const struct open *o)
 {
-	return scope == TS_ORGAN ? "@@organs" : scope == TS_OBJECT ?
-	    "@@objects" : "the top level";
+	for (int i = o->n - 1; i >= 0; i--) {
+		enum block b = t->segs[o->seg[i]].block;
+
+		if (b == B_ORGANS)
+			return TS_ORGAN;
+		if (b == B_OBJECTS)
+			return TS_OBJECT;
+	}
+	return TS_GLOBAL;
 }
 
-/* A directive line: @@objects, @@organs, @@end or an @@# comment. */
+/*
+ * A directive line: a block's start (@@structures, @@objects, @@organs,
+ * @@part, @@main), @@end, or an @@# comment.  @@structures stands only
+ * at the top; @@objects and @@organs not inside each other.
+ */
 static int
 directive(struct tmpl *t, const char *file, int line, const char *p,
-    size_t len, size_t *open, int *open_line)
+    size_t len, struct open *o)
 {
 	const char *w = p + 2;
-	size_t wl = len - 2;
+	size_t wl = len - 2, b;
 
 	while (wl > 0 && isspace((unsigned char)w[wl - 1]))
 		wl--;
 	if (wl > 0 && w[0] == '#')
 		return 0;
-	if ((wl == 6 && strncmp(w, "organs", 6) == 0) ||
-	    (wl == 7 && strncmp(w, "objects", 7) == 0)) {
-		if (*open != (size_t)-1) {
-			diag(ST_SCENE, file, line, 0, "@@%.*s inside %s: "
-			    "blocks do not nest", (int)wl, w,
-			    scope_words(t->segs[*open].scope));
-			return -1;
-		}
-		*open = t->nsegs;
-		*open_line = line;
-		seg_add(t, SEG_BEGIN)->scope = w[1] == 'r' ? TS_ORGAN :
-		    TS_OBJECT;
-		return 0;
-	}
 	if (wl == 3 && strncmp(w, "end", 3) == 0) {
-		if (*open == (size_t)-1) {
-			diag(ST_SCENE, file, line, 0, "@@end without "
-			    "@@organs or @@objects");
+		if (o->n == 0) {
+			diag(ST_SCENE, file, line, 0, "@@end without a block "
+			    "to end");
 			return -1;
 		}
-		t->segs[*open].end = t->nsegs;
+		t->segs[o->seg[--o->n]].end = t->nsegs;
 		seg_add(t, SEG_END);
-		*open = (size_t)-1;
 		return 0;
 	}
-	diag(ST_SCENE, file, line, 0, "unknown directive '@@%.*s' "
-	    "(@@organs, @@objects, @@end or @@# comment)",
-	    (int)(wl > 40 ? 40 : wl), w);
-	return -1;
+	for (b = 0; b < NBLOCKS; b++)
+		if (strlen(block_words[b]) == wl &&
+		    strncmp(w, block_words[b], wl) == 0)
+			break;
+	if (b == NBLOCKS) {
+		diag(ST_SCENE, file, line, 0, "unknown directive '@@%.*s' "
+		    "(@@structures, @@objects, @@organs, @@part, @@main, "
+		    "@@end or @@# comment)", (int)(wl > 40 ? 40 : wl), w);
+		return -1;
+	}
+	if ((b == B_STRUCTURES && o->n > 0) ||
+	    ((b == B_OBJECTS || b == B_ORGANS) && scope_of(t, o) !=
+	    TS_GLOBAL) || o->n == NEST_MAX) {
+		diag(ST_SCENE, file, line, 0, "@@%s inside @@%s: %s",
+		    block_words[b], block_words[t->segs[o->seg[o->n - 1]].block],
+		    b == B_STRUCTURES ? "@@structures stands only at the top" :
+		    o->n == NEST_MAX ? "blocks nested too deeply" :
+		    "@@objects and @@organs do not nest");
+		return -1;
+	}
+	if (b == B_STRUCTURES)
+		t->structures = 1;
+	o->seg[o->n] = t->nsegs;
+	o->line[o->n++] = line;
+	seg_add(t, SEG_BEGIN)->block = (enum block)b;
+	return 0;
 }
 
 /* One line of text: copy it, with placeholders and "@@" resolved. */
@@ -331,8 +385,8 @@ tmpl_parse(const char *file, const char *text, size_t len,
     const struct tmpl_var *extra)
 {
 	struct tmpl *t = xcalloc(1, sizeof(*t));
-	size_t open = (size_t)-1;
-	int line = 1, open_line = 0;
+	struct open o = { { 0 }, { 0 }, 0 };
+	int line = 1;
 	const char *p, *end;
 
 	if (memchr(text, '\0', len) != NULL) {
@@ -346,12 +400,10 @@ tmpl_parse(const char *file, const char *text, size_t len,
 	for (p = t->text, end = p + len; p < end; line++) {
 		const char *nl = memchr(p, '\n', (size_t)(end - p));
 		const char *next = nl != NULL ? nl + 1 : end;
-		int scope = open == (size_t)-1 ? TS_GLOBAL :
-		    t->segs[open].scope;
 		int rc = next - p >= 2 && p[0] == '@' && p[1] == '@' ?
 		    directive(t, file, line, p, (size_t)((nl ? nl : end) - p),
-		    &open, &open_line) :
-		    text_line(t, file, line, p, next, scope, extra);
+		    &o) :
+		    text_line(t, file, line, p, next, scope_of(t, &o), extra);
 
 		if (rc < 0) {
 			tmpl_free(t);
@@ -359,9 +411,9 @@ tmpl_parse(const char *file, const char *text, size_t len,
 		}
 		p = next;
 	}
-	if (open != (size_t)-1) {
-		diag(ST_SCENE, file, open_line, 0, "%s is not closed by "
-		    "@@end", scope_words(t->segs[open].scope));
+	if (o.n > 0) {
+		diag(ST_SCENE, file, o.line[o.n - 1], 0, "@@%s is not closed "
+		    "by @@end", block_words[t->segs[o.seg[o.n - 1]].block]);
 		tmpl_free(t);
 		return NULL;
 	}
@@ -417,46 +469,75 @@ tmpl_builtin(const char *name, const struct tmpl_var *extra)
 	return NULL;
 }
 
-/* Segments [from, to) of one block item, or of the top level. */
+static void	write_run(const struct tmpl *, size_t from, size_t to,
+		    struct sink *, struct tmpl_ctx *);
+
+/* A block starting at segment i, in context c. */
+static void
+write_block(const struct tmpl *t, size_t i, struct sink *s,
+    struct tmpl_ctx *c)
+{
+	const struct seg *g = &t->segs[i];
+	struct tmpl_ctx in = *c;
+	size_t n;
+
+	switch (g->block) {
+	case B_STRUCTURES:
+		for (size_t k = 0; k < c->nall; k++) {
+			in.r = c->all[k];
+			write_run(t, i + 1, g->end, s, &in);
+		}
+		return;
+	case B_PART:
+	case B_MAIN:
+		if ((g->block == B_PART) == (c->r->part != 0))
+			write_run(t, i + 1, g->end, s, &in);
+		return;
+	case B_OBJECTS:
+	case B_ORGANS:
+		in.scope = g->block == B_ORGANS ? TS_ORGAN : TS_OBJECT;
+		n = g->block == B_ORGANS ? c->r->count : c->r->nobjects;
+		for (size_t k = 0; k < n; k++) {
+			in.organ = in.object = k;
+			write_run(t, i + 1, g->end, s, &in);
+		}
+		return;
+	}
+}
+
+/* Segments [from, to): text, placeholders and whole blocks. */
 static void
 write_run(const struct tmpl *t, size_t from, size_t to, struct sink *s,
-    const struct tmpl_ctx *c)
+    struct tmpl_ctx *c)
 {
 	for (size_t i = from; i < to; i++) {
 		const struct seg *g = &t->segs[i];
 
 		if (g->kind == SEG_TEXT)
 			sink_write(s, g->text, g->len);
-		else
+		else if (g->kind == SEG_VAR)
 			g->var->put(s, c);
+		else if (g->kind == SEG_BEGIN) {
+			write_block(t, i, s, c);
+			i = g->end;
+		}
 	}
 }
 
 void
-tmpl_write(const struct tmpl *t, struct sink *s, const struct result *r,
-    unsigned opts)
+tmpl_write(const struct tmpl *t, struct sink *s,
+    const struct result *const *all, size_t nall, unsigned opts)
 {
-	struct tmpl_ctx c = { r, opts, TS_GLOBAL, 0, 0 };
-	size_t i = 0, from = 0;
+	struct tmpl_ctx c = { all[nall - 1], opts, TS_GLOBAL, 0, 0, all,
+	    nall };
 
-	for (; i < t->nsegs; i++) {
-		const struct seg *g = &t->segs[i];
-		size_t n;
+	write_run(t, 0, t->nsegs, s, &c);
+}
 
-		if (g->kind != SEG_BEGIN)
-			continue;
-		write_run(t, from, i, s, &c);
-		c.scope = g->scope;
-		n = g->scope == TS_ORGAN ? r->count : r->nobjects;
-		for (size_t k = 0; k < n; k++) {
-			c.organ = c.object = k;
-			write_run(t, i + 1, g->end, s, &c);
-		}
-		c.scope = TS_GLOBAL;
-		i = g->end;
-		from = i + 1;
-	}
-	write_run(t, from, t->nsegs, s, &c);
+int
+tmpl_structures(const struct tmpl *t)
+{
+	return t->structures;
 }
 
 void

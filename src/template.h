@@ -16,6 +16,8 @@
 
 /* Writer options a template may read. */
 #define TO_OBJECTS	0x1	/* --blender-objects */
+#define TO_FLATTEN	0x2	/* --flatten: every leaf organ, in the world */
+#define TO_ANIMATE	0x4	/* --frames: one file animating every frame */
 
 struct tmpl_ctx {
 	const struct result	*r;
@@ -23,6 +25,9 @@ struct tmpl_ctx {
 	int			 scope;		/* TS_* being written */
 	size_t			 object;	/* in TS_OBJECT */
 	size_t			 organ;		/* in TS_ORGAN */
+	const struct result *const *all;	/* every structure, the
+						   main last */
+	size_t			 nall;
 };
 
 typedef void tmpl_put_fn(struct sink *, const struct tmpl_ctx *);
@@ -40,8 +45,14 @@ struct tmpl	*tmpl_load(const char *path, const struct tmpl_var *extra);
 struct tmpl	*tmpl_builtin(const char *name, const struct tmpl_var *extra);
 struct tmpl	*tmpl_parse(const char *file, const char *text, size_t len,
 		    const struct tmpl_var *extra);
+/*
+ * Write the structures all[0 .. n-1]: parts before the structures using
+ * them, frame by frame; outside @@structures the last one is meant.
+ */
 void		 tmpl_write(const struct tmpl *, struct sink *,
-		    const struct result *, unsigned opts);
+		    const struct result *const *all, size_t n, unsigned opts);
+/* Whether it has a @@structures block (else it writes the main alone). */
+int		 tmpl_structures(const struct tmpl *);
 void		 tmpl_free(struct tmpl *);
 
 /* Helpers for writers' placeholders. */

@@ -7,8 +7,11 @@
 #include "sink.h"
 #include "template.h"
 
-/* Writers only read the result; errors in the sink are the caller's. */
-typedef void writer_fn(struct sink *, const struct result *);
+/*
+ * Writers only read the result; errors in the sink are the caller's.
+ * opts: the TO_* options the writer takes (template.h).
+ */
+typedef void writer_fn(struct sink *, const struct result *, unsigned opts);
 
 /*
  * A format writes either through its own function, or from a template

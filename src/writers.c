@@ -6,9 +6,10 @@
 const struct writer writers[] = {
 	{ "pov", NULL, "pov.tmpl", "pov-arrays.tmpl", 0, pov_vars, pov_check,
 	  "a POV-Ray include file declaring the structure" },
-	{ "blender", NULL, "blender.tmpl", NULL, TO_OBJECTS, blender_vars, NULL,
+	{ "blender", NULL, "blender.tmpl", NULL, TO_OBJECTS | TO_ANIMATE,
+	  blender_vars, NULL,
 	  "a Python script that builds the structure in Blender" },
-	{ "csv", csv_write, NULL, NULL, 0, NULL, NULL,
+	{ "csv", csv_write, NULL, NULL, TO_FLATTEN, NULL, NULL,
 	  "one line per organ: position, frame, scale" },
 	{ "svg", svg_write, NULL, NULL, 0, NULL, NULL,
 	  "a picture: organs, their parastichies, from above or unrolled" },

@@ -45,10 +45,12 @@ DAISY_COUNT=$(px --info scenes/daisy.cfg | sed -n 's/^count: //p')
 try "the script is Python that names organs only as data" python3 -c '
 import ast, sys
 tree = ast.parse(open(sys.argv[1]).read())
-objs = [n for n in tree.body if isinstance(n, ast.Assign) and n.targets[0].id == "OBJECTS"][0]
-assert ast.literal_eval(objs.value) == [("Seed", 100), ("Bract", 50), ("Petal", 50)]
+objs = [n for n in tree.body if isinstance(n, ast.Assign) and n.targets[0].id == "STRUCTURES"][0]
+(frame, name, count, objects, data), = ast.literal_eval(objs.value)
+assert (frame, name, count) == (1, "Head", 200), (frame, name, count)
+assert objects == [("Seed", 100), ("Bract", 50), ("Petal", 50)], objects
 ' "$OUT/head.py"
-assert "parses, OBJECTS is a literal" '[ $rc -eq 0 ]'
+assert "parses, STRUCTURES is a literal" '[ $rc -eq 0 ]'
 end
 
 # checked NAME MIN: after a check.py run, keep its log as NAME.log and
@@ -83,7 +85,7 @@ for b in $BLENDERS; do
 		blend "$D/artist.blend" --python "$OUT/head.py" --python "$OUT/head.py" \
 		--python tests/blender/check.py -- "$OUT/head.csv" Head instances
 	checked instances 6
-	assert "says what it did" 'grep -q "phyllo-export: built collection .Head.: 200 organs of 3 objects" $D/instances.log'
+	assert "says what it did" 'grep -q "phyllo-export: built collection .Head.: 200 organs over 1 frame" $D/instances.log'
 	assert "no traceback" '! grep -q Traceback $D/instances.log'
 	end
 
