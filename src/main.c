@@ -12,6 +12,7 @@
 
 #include "compound.h"
 #include "diag.h"
+#include "flatten.h"
 #include "mem.h"
 #include "phyllo.h"
 #include "model.h"
@@ -356,31 +357,64 @@ load_template(const struct args *a)
 	return tmpl_builtin(name, a->writer->vars);
 }
 
-/* The structures a template writes: all of them, or the main alone. */
-static const struct result **
-structures(const struct tmpl *t, const struct compound *c, size_t nc,
-    size_t *n)
-{
+/* The structures a template writes, and the merged parts it owns. */
+struct structures {
 	const struct result **all;
+	size_t		 n;
+	struct result	*merged;
+	size_t		 nmerged;
+};
+
+/* Whether the main structure places part p itself. */
+static int
+placed_by_main(const struct result *main, const struct result *p)
+{
+	for (size_t j = 0; main->sub != NULL && j < main->nobjects; j++)
+		if (main->sub[j] == p)
+			return 1;
+	return 0;
+}
+
+/*
+ * Every structure of frames c[0 .. nc-1], parts first; the main alone
+ * for a template without @@structures.  A writer that nests only one
+ * level (TO_SHALLOW) gets the parts the main places, each with its own
+ * parts merged into it.
+ */
+static void
+structures(const struct args *a, const struct tmpl *t,
+    const struct compound *c, size_t nc, struct structures *L)
+{
 	size_t total = 0;
 
 	for (size_t k = 0; k < nc; k++)
 		total += c[k].n;
-	all = xcalloc(total, sizeof(*all));
-	*n = 0;
-	if (t != NULL && !tmpl_structures(t)) {
+	*L = (struct structures){ xcalloc(total, sizeof(*L->all)), 0,
+	    xcalloc(total, sizeof(*L->merged)), 0 };
+	if (!tmpl_structures(t)) {
 		if (total > nc)
 			diag(ST_OK, NULL, 0, 0, "the template has no "
 			    "@@structures block: the parts of the structure "
 			    "are written as placeholders");
 		for (size_t k = 0; k < nc; k++)
-			all[(*n)++] = compound_main(&c[k]);
-		return all;
+			L->all[L->n++] = compound_main(&c[k]);
+		return;
 	}
 	for (size_t k = 0; k < nc; k++)
-		for (size_t i = 0; i < c[k].n; i++)
-			all[(*n)++] = &c[k].parts[i]->res;
-	return all;
+		for (size_t i = 0; i < c[k].n; i++) {
+			const struct result *r = &c[k].parts[i]->res;
+
+			if (!(a->writer->opts & TO_SHALLOW) || i + 1 == c[k].n)
+				L->all[L->n++] = r;
+			else if (!placed_by_main(compound_main(&c[k]), r))
+				continue;	/* merged into the parts using it */
+			else if (r->sub == NULL)
+				L->all[L->n++] = r;
+			else {
+				flatten_result(r, &L->merged[L->nmerged]);
+				L->all[L->n++] = &L->merged[L->nmerged++];
+			}
+		}
 }
 
 /*
@@ -401,11 +435,14 @@ write_file(const struct args *a, const struct tmpl *t, const char *path,
 		return -1;
 	sink_init(&s, fp);
 	if (t != NULL) {
-		size_t n;
-		const struct result **all = structures(t, c, nc, &n);
+		struct structures L;
 
-		tmpl_write(t, &s, all, n, opts);
-		free(all);
+		structures(a, t, c, nc, &L);
+		tmpl_write(t, &s, L.all, L.n, opts);
+		for (size_t i = 0; i < L.nmerged; i++)
+			result_free(&L.merged[i]);
+		free(L.merged);
+		free(L.all);
 	} else
 		a->writer->write(&s, compound_main(&c[nc - 1]), opts);
 	if (sink_finish(&s) != 0) {

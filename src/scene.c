@@ -565,8 +565,9 @@ load_ranges(struct load *L, const config_setting_t *s, const char *path,
 		}
 		if (rg->scenes != NULL && rg->nscenes != rg->nnames) {
 			diag(ST_SCENE, L->file, rg->given[RG_SCENE], 0,
-			    "%s.scene lists %zu files for %zu objects: one "
-			    "each", path, rg->nscenes, rg->nnames);
+			    "%s.scene lists %zu file%s for %zu objects: one "
+			    "each", path, rg->nscenes, rg->nscenes == 1 ? "" :
+			    "s", rg->nnames);
 			return -1;
 		}
 	}
@@ -727,6 +728,20 @@ name_from_file(char *dst, const char *file)
 	dst[len] = '\0';
 }
 
+/* "made of floret.cfg" or "a plain object", for messages. */
+static void
+scene_words(char *buf, size_t sz, const char *file)
+{
+	char q[SCENE_PATH_MAX + 8];
+
+	if (file == NULL) {
+		snprintf(buf, sz, "a plain object");
+		return;
+	}
+	cfgtext_quote(q, sizeof(q), file);
+	snprintf(buf, sz, "made of \"%s\"", q);
+}
+
 /* Whether two entries' scene files for one object agree (NULL: none). */
 static int
 same_scene(const char *a, const char *b)
@@ -774,12 +789,17 @@ collect_objects(struct load *L)
 				sc->object_line[sc->nobjects++] = rg->at.line;
 			} else if (!same_scene(sc->object_scene[j],
 			    rg->scenes ? rg->scenes[k] : NULL)) {
+				char here[SCENE_PATH_MAX + 32];
+				char there[SCENE_PATH_MAX + 32];
+
+				scene_words(here, sizeof(here), rg->scenes ?
+				    rg->scenes[k] : NULL);
+				scene_words(there, sizeof(there),
+				    sc->object_scene[j]);
 				diag(ST_SCENE, L->file, rg->at.line, 0, "organ "
 				    "object \"%s\" is %s here but %s on line "
 				    "%d: one name, one thing", rg->names[k],
-				    rg->scenes ? "a scene" : "not a scene",
-				    sc->object_scene[j] ? "a scene" :
-				    "not a scene", sc->object_line[j]);
+				    here, there, sc->object_line[j]);
 				return -1;
 			}
 			rg->ids[k] = (unsigned)j;

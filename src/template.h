@@ -18,6 +18,7 @@
 #define TO_OBJECTS	0x1	/* --blender-objects */
 #define TO_FLATTEN	0x2	/* --flatten: every leaf organ, in the world */
 #define TO_ANIMATE	0x4	/* --frames: one file animating every frame */
+#define TO_SHALLOW	0x8	/* parts one level deep: their parts merged */
 
 struct tmpl_ctx {
 	const struct result	*r;

@@ -6,7 +6,7 @@
 const struct writer writers[] = {
 	{ "pov", NULL, "pov.tmpl", "pov-arrays.tmpl", 0, pov_vars, pov_check,
 	  "a POV-Ray include file declaring the structure" },
-	{ "blender", NULL, "blender.tmpl", NULL, TO_OBJECTS | TO_ANIMATE,
+	{ "blender", NULL, "blender.tmpl", NULL, TO_OBJECTS | TO_ANIMATE | TO_SHALLOW,
 	  blender_vars, NULL,
 	  "a Python script that builds the structure in Blender" },
 	{ "csv", csv_write, NULL, NULL, TO_FLATTEN, NULL, NULL,

@@ -5,7 +5,9 @@
 # .blend holding the artist's own Seed object and Bract collection,
 # then hold the evaluated instances (object, position, rotation and
 # scale) against the CSV; the same for linked duplicates and for an
-# empty file (placeholders only); every example scene in one process;
+# empty file (placeholders only); a compound structure of three levels,
+# each leaf against --csv --flatten, and its growth over frames read at
+# two frames; every example scene in one process;
 # a too-old Blender's one-line refusal; the import add-on.
 . tests/lib.sh
 
@@ -35,6 +37,33 @@ px --blender -o "$OUT/bare.py" "$OUT/bare.cfg"
 for cfg in scenes/*.cfg; do
 	px --blender -o "$OUT/scene-$(basename "$cfg" .cfg).py" "$cfg"
 done
+# Three levels, frames nowhere the identity: a domed disk of Mids, each
+# a cylinder of Buds, each a domed disk of Seeds (the artist's own Seed
+# in artist.blend); and the same growing over three frames.
+mkdir -p "$OUT/sub"
+cat >"$OUT/tree.cfg" <<'CFG'
+name = "Tree";
+model = "planar";
+count = "5 + 3 * F";
+planar = { scale = 0.5; dome = 0.4; };
+organs = ( { object = "Mid"; scene = "mid.cfg"; scale = "0.8 * r"; roll = 30; } );
+CFG
+cat >"$OUT/mid.cfg" <<'CFG'
+model = "cylindrical";
+count = 9;
+cylindrical = { parastichies = [2, 3]; radius = "1 - 0.3 * t"; };
+organs = ( { object = "Bud"; scene = "sub/bud.cfg"; scale = "1.5 * r"; tilt = "15 + 30 * f"; } );
+CFG
+cat >"$OUT/sub/bud.cfg" <<'CFG'
+model = "planar";
+count = 7;
+planar = { scale = 0.3; dome = 0.2; };
+organs = ( { object = "Seed"; scale = "0.5 * r"; tilt = 20; roll = "10 * n"; } );
+CFG
+px --blender -o "$OUT/tree.py" "$OUT/tree.cfg"
+px --csv --flatten -o "$OUT/tree.csv" "$OUT/tree.cfg"
+px --blender --frames 3 -o "$OUT/grow.py" "$OUT/tree.cfg"
+px --csv --flatten --frames 3 -o "$OUT/grow%d.csv" "$OUT/tree.cfg"
 printf 'model = "planar";\ncount = 0;\n' >"$OUT/bad-addon.cfg"
 ADDON_ZIP=$TESTBIN/phyllo_import.zip
 # Statically linked: it runs inside the roots, whose libconfig differs.
@@ -100,6 +129,21 @@ for b in $BLENDERS; do
 		--python tests/blender/check.py -- "$OUT/bare.csv" Head instances
 	checked bare 5
 	end
+
+	try "$V: a compound of three levels: every leaf an instance of the artist's Seed where --flatten puts it, run twice" \
+		blend "$D/artist.blend" --python "$OUT/tree.py" --python "$OUT/tree.py" \
+		--python tests/blender/check.py -- "$OUT/tree.csv" Tree leaves
+	checked tree 6
+	assert "8 x 9 x 7 leaves" 'grep -q "check: ok 504 placed organs" $D/tree.log'
+	end
+
+	for f in 1 3; do
+		try "$V: --frames 3, one script: at frame $f the leaves of frame $f alone, where its --flatten puts them" \
+			blend "$D/artist.blend" --python "$OUT/grow.py" --python "$OUT/grow.py" \
+			--python tests/blender/check.py -- "$OUT/grow$f.csv" Tree leaves "$f"
+		checked grow$f 6
+		end
+	done
 
 	# Every example scene, in one Blender process.
 	blend --factory-startup --python tests/blender/run_all.py -- "$OUT"/scene-*.py

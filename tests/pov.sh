@@ -11,11 +11,13 @@ if [ -z "${POVRAY:-}" ]; then
 fi
 PPMSTAT=$TESTBIN/ppmstat
 
-# render NAME: $OUT/NAME.pov to $OUT/NAME.ppm, 100x100, in $OUT so that
-# its includes are found.
+# render NAME [OPTION...]: $OUT/NAME.pov to $OUT/NAME.ppm, 100x100, in
+# $OUT so that its includes are found.
 render() {
-	(cd "$OUT" && "$POVRAY" -D +FP +W100 +H100 -GA +I"$1.pov" +O"$1.ppm") \
-		>"$OUT/$1.log" 2>&1
+	name_=$1
+	shift
+	(cd "$OUT" && "$POVRAY" -D +FP +W100 +H100 -GA "$@" +I"$name_.pov" \
+		+O"$name_.ppm") >"$OUT/$name_.log" 2>&1
 }
 
 # A camera straight down on the XZ plane, 4 x 4 units: 25 pixels a unit,
@@ -154,12 +156,26 @@ assert "red covers 490.9 px (got $red)" 'near $red 490.9 5'
 end
 
 # The example scenes render (small, quickly).
+# One that says "// frames: N" includes the frame_number'th of N includes.
 for pov in scenes/*.pov; do
 	name=$(basename "$pov" .pov)
 	cfg=scenes/$name.cfg
+	frames=$(sed -n 's|^// frames: \([0-9]*\)$|\1|p' "$pov")
+	cp "$pov" "$OUT/$name.pov"
+	if [ -n "$frames" ]; then
+		px --pov --frames "$frames" -o "$OUT/$name%03d.inc" "$cfg"
+		try "scenes/$name.pov renders its $frames frames" \
+			render "$name" +KFI1 +KFF"$frames"
+		assert "POV-Ray exit 0" '[ $rc -eq 0 ]'
+		for k in $(seq 1 "$frames"); do
+			assert "frame $k not just background" '[ -s $OUT/$name$k.ppm ] && [ $(count $OUT/$name$k.ppm 0 0 0) -lt 10000 ]'
+		done
+		assert "the frames differ" '! same_pixels $OUT/${name}1.ppm $OUT/$name$frames.ppm'
+		end
+		continue
+	fi
 	inc=$(sed -n 's/^#include "\(.*\)"$/\1/p' "$pov" | tail -1)
 	px --pov -o "$OUT/$inc" "$cfg"
-	cp "$pov" "$OUT/$name.pov"
 	try "scenes/$name.pov renders" render "$name"
 	assert "POV-Ray exit 0" '[ $rc -eq 0 ]'
 	assert "not just background" '[ $(count $OUT/$name.ppm 0 0 0) -lt 10000 ]'

@@ -3,7 +3,10 @@
 # duplicate) of the right object, with the CSV's frame and scale, one
 # copy only, no orphan data.  Usage:
 #   blender -b FILE.blend --python script.py --python script.py
-#       --python check.py -- CSV NAME instances|objects
+#       --python check.py -- CSV NAME instances|objects|leaves [FRAME]
+# leaves: a compound structure against its --csv --flatten, every leaf
+# an instance (parts are instanced collections, not counted); FRAME:
+# the scene frame to evaluate, for --frames.
 # Prints "check: ..." lines and exits 1 (with --python-exit-code 1) on
 # a failure.
 import csv
@@ -11,7 +14,10 @@ import sys
 
 import bpy
 
-csv_path, name, mode = sys.argv[sys.argv.index("--") + 1:][:3]
+args = sys.argv[sys.argv.index("--") + 1:]
+csv_path, name, mode = args[:3]
+if len(args) > 3:
+    bpy.context.scene.frame_set(int(args[3]))
 TAG = "phyllo_export"
 rows = list(csv.DictReader(open(csv_path)))
 failures = []
@@ -55,11 +61,15 @@ def built():
             for o in c.objects}
     dg = bpy.context.evaluated_depsgraph_get()
     out = []
-    if mode == "instances":
+    if mode in ("instances", "leaves"):
         for inst in dg.object_instances:
-            if inst.is_instance and inst.parent.name in ours:
-                out.append((inst.instance_object.name,
-                            columns(inst.matrix_world)))
+            if not inst.is_instance or inst.parent.name not in ours:
+                continue
+            if mode == "leaves" and inst.instance_object.name in ours \
+                    and inst.instance_object.modifiers:
+                continue        # a part's own point cloud, not a leaf
+            out.append((inst.instance_object.name,
+                        columns(inst.matrix_world)))
     else:
         for o in top.objects:
             if o.instance_type == "COLLECTION":
@@ -95,13 +105,19 @@ for part, cols in want:
 check(missing == 0, "every organ is the right object (%d missing)" % missing)
 check(worst < 2e-5, "matrices equal the CSV frames times scale, at the "
       "CSV positions (worst %.2g)" % worst)
+if mode == "leaves":
+    top = bpy.data.collections[name]
+    points = sum(len(o.data.vertices) for c in [top] + list(top.children_recursive)
+                 for o in c.objects if o.modifiers)
+    check(points < len(want), "instanced, not copied: %d points in the point "
+          "clouds place %d leaves" % (points, len(want)))
 check(len([c for c in bpy.data.collections if c.name == name or
            c.name.startswith(name + ".")]) == 1, "one collection %r" % name)
 orphans = [d.name for d in list(bpy.data.meshes) + list(bpy.data.node_groups)
            if d.users == 0]
 check(not orphans, "no orphan meshes or node groups %s" % orphans)
 groups = [g for g in bpy.data.node_groups if g.get(TAG) == name]
-if mode == "instances":
+if mode != "objects":
     check(groups and all(getattr(g, "is_modifier", True) for g in groups),
           "the node groups are offered in the modifier's picker "
           "(is_modifier where Blender has it)")
