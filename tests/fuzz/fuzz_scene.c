@@ -1,53 +1,116 @@
 /*
  * fuzz_scene.c - libFuzzer harness for the whole scene path: bytes ->
- * scene -> model -> organs -> every writer, into memory.  Scenes that
- * ask for more than 20,000 organs, or leave the count to the model, are
- * loaded and checked but not run, to keep each input fast; the limits
- * themselves have their own tests.
+ * scene (and the scenes it includes) -> model -> organs -> every
+ * writer, into memory.  The input is written to a file in a directory
+ * that also holds two parts it may name, part.cfg and nested.cfg (which
+ * names part.cfg), and is loaded as frame 2 of 3, so f and F are live.
+ * Scenes that ask for more than 20,000 organs, or leave the count to the
+ * model, are loaded and checked but not run, to keep each input fast;
+ * the limits themselves have their own tests.
  */
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+#include "compound.h"
+#include "flatten.h"
 #include "model.h"
 #include "scene.h"
 #include "writer.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
+static char dir[] = "/tmp/phyllo-fuzz-XXXXXX";
+static char path[64];
+
+static void
+put(const char *name, const char *text)
+{
+	char p[64];
+	FILE *fp;
+
+	snprintf(p, sizeof(p), "%s/%s", dir, name);
+	if ((fp = fopen(p, "w")) == NULL || fputs(text, fp) < 0 ||
+	    fclose(fp) != 0)
+		abort();
+}
+
+static void
+setup(void)
+{
+	if (path[0] != '\0')
+		return;
+	if (mkdtemp(dir) == NULL)
+		abort();
+	put("part.cfg", "model = \"planar\";\ncount = \"3 + F\";\n"
+	    "organs = ( { object = \"Bud\"; tilt = \"30 * f\"; } );\n");
+	put("nested.cfg", "model = \"planar\";\ncount = 4;\n"
+	    "organs = ( { object = \"Part\"; scene = \"part.cfg\"; } );\n");
+	snprintf(path, sizeof(path), "%s/fuzz.cfg", dir);
+}
+
+/* Whether every scene of c is small enough to run. */
+static int
+small(const struct compound *c)
+{
+	for (size_t i = 0; i < c->n; i++) {
+		const struct scene *sc = &c->parts[i]->sc;
+
+		/*
+		 * Without count a model finds its own (cylindrical.length,
+		 * the collision model's bound of a million): too slow.
+		 */
+		if (!sc->given[S_COUNT] || sc->count > 20000)
+			return 0;
+		/* The inhibition model's primordia cost a sum each: fewer. */
+		if (strcmp(sc->model->name, "inhibition") == 0 &&
+		    sc->count > 2000)
+			return 0;
+	}
+	return 1;
+}
+
 int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-	struct scene sc;
-	struct result res = { 0 };
+	struct frame fr = { 2, 3 };
+	struct compound c;
+	struct result merged;
+	const struct result *all[2];
 	struct tmpl *t;
 	struct sink s;
+	FILE *fp;
 
-	if (scene_load_buffer(&sc, "fuzz.cfg", (const char *)data, size) != 0)
+	setup();
+	if ((fp = fopen(path, "wb")) == NULL ||
+	    fwrite(data, 1, size, fp) != size || fclose(fp) != 0)
+		abort();
+	if (compound_load(&c, path, &fr, pov_check) != 0 || !small(&c) ||
+	    compound_run(&c, &fr) != 0)
 		goto out;
-	/*
-	 * Without count a model finds its own (cylindrical.length, the
-	 * collision model's bound of a million): too slow to fuzz.
-	 */
-	if (!sc.given[S_COUNT] || sc.count > 20000)
-		goto out;
-	/* The inhibition model's primordia cost a sum each: fewer. */
-	if (strcmp(sc.model->name, "inhibition") == 0 && sc.count > 2000)
-		goto out;
-	if (model_run(&sc, &res) != 0)
-		goto out;
+	all[0] = compound_main(&c);
 	sink_init(&s, NULL);
-	csv_write(&s, &res);
-	info_write(&s, &res);
-	svg_write(&s, &res);
-	if (pov_check(&sc) == 0 &&
-	    (t = tmpl_builtin("pov.tmpl", pov_vars)) != NULL) {
-		tmpl_write(t, &s, &res, 0);
+	csv_write(&s, all[0], 0);
+	if (flatten_count(all[0]) <= 100000)
+		csv_write(&s, all[0], TO_FLATTEN);
+	info_write(&s, all[0], 0);
+	svg_write(&s, all[0], 0);
+	if ((t = tmpl_builtin("pov.tmpl", pov_vars)) != NULL) {
+		for (size_t i = 0; i < c.n; i++) {
+			all[0] = &c.parts[i]->res;
+			tmpl_write(t, &s, all, 1, 0);
+		}
 		tmpl_free(t);
+	}
+	if (flatten_count(compound_main(&c)) <= 100000) {
+		flatten_result(compound_main(&c), &merged);
+		result_free(&merged);
 	}
 	sink_free(&s);
 out:
-	result_free(&res);
-	scene_free(&sc);
+	compound_free(&c);
 	return 0;
 }

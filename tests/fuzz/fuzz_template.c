@@ -1,4 +1,8 @@
-/* fuzz_template.c - libFuzzer harness for the template engine, parsing and writing. */
+/*
+ * fuzz_template.c - libFuzzer harness for the template engine, parsing
+ * and writing two structures, a part and the main one, so that
+ * @@structures, @@part and @@main are live.
+ */
 #include <stdint.h>
 #include <string.h>
 
@@ -15,22 +19,24 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	static const char text[] = "model = \"planar\"; count = 5;\n"
 	    "organs = ( { object = [\"A\", \"B\"]; } );";
 	static struct scene sc;
-	static struct result res;
+	static struct result res, part;
 	static int ready;
+	const struct result *all[2] = { &part, &res };
 	struct tmpl *t;
 	struct sink s;
 
 	if (!ready) {
 		if (scene_load_buffer(&sc, "t.cfg", text, strlen(text)) != 0 ||
-		    model_run(&sc, &res) != 0)
+		    model_run(&sc, &res) != 0 || model_run(&sc, &part) != 0)
 			return 0;
+		part.part = 1;
 		ready = 1;
 	}
 	if ((t = tmpl_parse("fuzz.tmpl", (const char *)data, size,
 	    pov_vars)) == NULL)
 		return 0;
 	sink_init(&s, NULL);
-	tmpl_write(t, &s, &res, 0);
+	tmpl_write(t, &s, all, 2, 0);
 	sink_free(&s);
 	tmpl_free(t);
 	return 0;

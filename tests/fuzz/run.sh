@@ -14,6 +14,8 @@ for f in ${*:-fuzz_scene fuzz_expr fuzz_template}; do
 	mkdir -p "$c"
 	case $f in
 	fuzz_scene) cp scenes/*.cfg tests/golden/*.cfg tests/bad/*.cfg "$c"/
+		# Naming the two parts the harness provides.
+		printf 'model = "planar";\ncount = "5 + F";\norgans = ( { object = ["P", "N"];\n  scene = ["part.cfg", "nested.cfg"]; scale = "r * f"; } );\n' >"$c/compound.cfg"
 		# Collision scenes run only with a count (see the harness).
 		for s in scenes/*.cfg; do
 			{ echo 'count = 400;'; cat "$s"; } >"$c/count-${s##*/}"
