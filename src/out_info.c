@@ -1,5 +1,7 @@
 /* out_info.c - "key: value" lines about the result, for people and scripts. */
 #include <math.h>
+
+#include "flatten.h"
 #include "parastichy.h"
 #include "writer.h"
 
@@ -58,14 +60,35 @@ convergents(struct sink *s, const struct result *r)
 	sink_putc(s, '\n');
 }
 
+/* "parts: Floret 1000; Stem 1" and "leaves: 1000000": a compound's. */
+static void
+parts(struct sink *s, const struct result *r)
+{
+	double leaves = (double)flatten_count(r);
+	int first = 1;
+
+	sink_puts(s, "parts:");
+	for (size_t j = 0; j < r->nobjects; j++) {
+		if (r->sub[j] == NULL)
+			continue;
+		sink_puts(s, first ? " " : "; ");
+		sink_puts(s, r->objects[j]);
+		sink_putc(s, ' ');
+		sink_uint(s, (unsigned long long)r->sub[j]->count);
+		first = 0;
+	}
+	sink_putc(s, '\n');
+	line(s, "leaves", 1, &leaves);
+}
+
 void
 info_write(struct sink *s, const struct result *r, unsigned opts)
 {
-	(void)opts;
 	double box[6] = { HUGE_VAL, HUGE_VAL, HUGE_VAL,
 	    -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
 	double count = (double)r->count;
 
+	(void)opts;
 	sink_puts(s, "model: ");
 	sink_puts(s, r->model);
 	sink_puts(s, "\nname: ");
@@ -86,6 +109,13 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 		sink_puts(s, r->objects[i]);
 	}
 	sink_putc(s, '\n');
+	if (r->sub != NULL)
+		parts(s, r);
+	if (r->frames > 1) {
+		double fr[3] = { r->frame, r->frames, r->frame_f };
+
+		line(s, "frame", 3, fr);
+	}
 	for (int i = 0; i < r->ninfo; i++) {
 		const struct info_item *it = &r->info[i];
 

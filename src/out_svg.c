@@ -150,7 +150,6 @@ text(struct sink *s, double x, double y, double size, const char *colour,
 void
 svg_write(struct sink *s, const struct result *r, unsigned opts)
 {
-	(void)opts;
 	static const char *const fam[2] = { "#c03030", "#2060c0" };
 	double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
 	double pad, w, h, em, rmed = 0;
@@ -160,6 +159,7 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 	double (*p)[2] = project(r, &unrolled);
 	char line[160];
 
+	(void)opts;
 	for (size_t i = 0; i < r->count; i++) {
 		for (int k = 0; k < 2; k++) {
 			lo[k] = fmin(lo[k], p[i][k] - r->organs[i].radius);

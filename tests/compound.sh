@@ -84,6 +84,12 @@ else
 	skip "--csv --flatten against a composition by hand (needs python3)"
 fi
 
+try "--info names the parts with their counts and counts the leaves" px --info "$OUT/top.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "parts: Mid 9" 'grep -qx "parts: Mid 9" $OUT/stdout'
+assert "leaves: 693" 'grep -qx "leaves: 693" $OUT/stdout'
+end
+
 try "--flatten of a structure without parts is its --csv" px --csv --flatten scenes/sunflower.cfg
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "the same bytes" 'px --csv scenes/sunflower.cfg | cmp -s - $OUT/stdout'
@@ -221,6 +227,11 @@ sed -e 's/"10 + 5 \* F"/20/' -e 's/"137.5 + 2 \* f"/138.5/' -e 's/"0.1 + 0.1 \* 
 	-e 's/"r \* (1 + f)"/"1.5 * r"/' "$OUT/grow.cfg" >"$OUT/grow-mid.cfg"
 assert "frame 2 equals the scene with f = 0.5, F = 2 written out" 'px --csv "$OUT/grow-mid.cfg" | cmp -s - $OUT/grow002.csv'
 assert "nothing else written" '[ $(ls $OUT | grep -c "^grow0") -eq 3 ] && [ -z "$(ls -A $OUT | grep "^\.grow")" ]'
+end
+
+try "--info --frames says which frame: F, N and f" px --info --frames 3 -o "$OUT/gi%d.txt" "$OUT/grow.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "frame: 2 3 0.5" 'grep -qx "frame: 2 3 0.5" $OUT/gi2.txt'
 end
 
 try "without --frames, f = 0 and F = 1" px --csv "$OUT/grow.cfg"
