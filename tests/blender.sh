@@ -37,29 +37,9 @@ px --blender -o "$OUT/bare.py" "$OUT/bare.cfg"
 for cfg in scenes/*.cfg; do
 	px --blender -o "$OUT/scene-$(basename "$cfg" .cfg).py" "$cfg"
 done
-# Three levels, frames nowhere the identity: a domed disk of Mids, each
-# a cylinder of Buds, each a domed disk of Seeds (the artist's own Seed
-# in artist.blend); and the same growing over three frames.
-mkdir -p "$OUT/sub"
-cat >"$OUT/tree.cfg" <<'CFG'
-name = "Tree";
-model = "planar";
-count = "5 + 3 * F";
-planar = { scale = 0.5; dome = 0.4; };
-organs = ( { object = "Mid"; scene = "mid.cfg"; scale = "0.8 * r"; roll = 30; } );
-CFG
-cat >"$OUT/mid.cfg" <<'CFG'
-model = "cylindrical";
-count = 9;
-cylindrical = { parastichies = [2, 3]; radius = "1 - 0.3 * t"; };
-organs = ( { object = "Bud"; scene = "sub/bud.cfg"; scale = "1.5 * r"; tilt = "15 + 30 * f"; } );
-CFG
-cat >"$OUT/sub/bud.cfg" <<'CFG'
-model = "planar";
-count = 7;
-planar = { scale = 0.3; dome = 0.2; };
-organs = ( { object = "Seed"; scale = "0.5 * r"; tilt = 20; roll = "10 * n"; } );
-CFG
+# A compound of three levels that grows over frames (the artist's own
+# Seed in artist.blend is its leaf).
+cp -r tests/compound/tree.cfg tests/compound/mid.cfg tests/compound/sub "$OUT/"
 px --blender -o "$OUT/tree.py" "$OUT/tree.cfg"
 px --csv --flatten -o "$OUT/tree.csv" "$OUT/tree.cfg"
 px --blender --frames 3 -o "$OUT/grow.py" "$OUT/tree.cfg"

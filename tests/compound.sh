@@ -6,29 +6,10 @@
 # file a frame with f and F, or none at all when a frame fails.
 . tests/lib.sh
 
-# Three levels with frames that are not the identity anywhere: a domed
-# disk of Mids (rolled), each a cylinder of Buds (tilted), each a domed
-# disk of Seeds (tilted and rolled).
-mkdir -p "$OUT/sub"
-cat >"$OUT/top.cfg" <<'CFG'
-name = "Top";
-model = "planar";
-count = 11;
-planar = { scale = 0.5; dome = 0.4; };
-organs = ( { object = "Mid"; scene = "mid.cfg"; scale = "0.8 * r"; roll = 30; } );
-CFG
-cat >"$OUT/mid.cfg" <<'CFG'
-model = "cylindrical";
-count = 9;
-cylindrical = { parastichies = [2, 3]; radius = "1 - 0.3 * t"; };
-organs = ( { object = "Bud"; scene = "sub/bud.cfg"; scale = "1.5 * r"; tilt = 15; } );
-CFG
-cat >"$OUT/sub/bud.cfg" <<'CFG'
-model = "planar";
-count = 7;
-planar = { scale = 0.3; dome = 0.2; };
-organs = ( { object = "Seed"; scale = "0.5 * r"; tilt = 20; roll = "10 * n"; } );
-CFG
+# tests/compound/tree.cfg: three levels, no frame the identity.
+T=tests/compound
+cp -r "$T/tree.cfg" "$T/mid.cfg" "$T/sub" "$OUT/"
+mv "$OUT/tree.cfg" "$OUT/top.cfg"
 
 px --csv -o "$OUT/top.csv" "$OUT/top.cfg"
 px --csv -o "$OUT/mid.csv" "$OUT/mid.cfg"
@@ -36,7 +17,7 @@ px --csv -o "$OUT/bud.csv" "$OUT/sub/bud.cfg"
 
 try "--csv of a compound lists the organs that place the parts" px --csv "$OUT/top.cfg"
 assert "exit 0" '[ $rc -eq 0 ]'
-assert "11 organs, each a Mid" '[ $(grep -c ",Mid," $OUT/stdout) -eq 11 ] && [ $(wc -l <$OUT/stdout) -eq 12 ]'
+assert "8 organs, each a Mid" '[ $(grep -c ",Mid," $OUT/stdout) -eq 8 ] && [ $(wc -l <$OUT/stdout) -eq 9 ]'
 end
 
 # compose TOP MID BUD: every leaf as the three CSVs compose by hand.
@@ -74,10 +55,10 @@ PY
 
 if command -v python3 >/dev/null; then
 	compose "$OUT/top.csv" "$OUT/mid.csv" "$OUT/bud.csv" >"$OUT/want.csv"
-	try "--csv --flatten: 11 x 9 x 7 leaves where the parts' own CSVs, composed by hand, put them" \
+	try "--csv --flatten: 8 x 9 x 7 leaves where the parts' own CSVs, composed by hand, put them" \
 		px --csv --flatten -o "$OUT/flat.csv" "$OUT/top.cfg"
 	assert "exit 0" '[ $rc -eq 0 ]'
-	assert "693 leaves" '[ $(($(wc -l <$OUT/flat.csv) - 1)) -eq 693 ]'
+	assert "504 leaves" '[ $(($(wc -l <$OUT/flat.csv) - 1)) -eq 504 ]'
 	assert "positions, frames, scales and radii agree" 'csv_close $OUT/want.csv $OUT/flat.csv 1e-8'
 	end
 else
@@ -87,7 +68,7 @@ fi
 try "--info names the parts with their counts and counts the leaves" px --info "$OUT/top.cfg"
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "parts: Mid 9" 'grep -qx "parts: Mid 9" $OUT/stdout'
-assert "leaves: 693" 'grep -qx "leaves: 693" $OUT/stdout'
+assert "leaves: 504" 'grep -qx "leaves: 504" $OUT/stdout'
 end
 
 try "--flatten of a structure without parts is its --csv" px --csv --flatten scenes/sunflower.cfg
@@ -126,7 +107,7 @@ end
 printf '@@organs\n@OBJECT@ @X@\n@@end\n' >"$OUT/old.tmpl"
 try "a template without @@structures writes the main structure and warns" px --pov --template "$OUT/old.tmpl" "$OUT/top.cfg"
 assert "exit 0" '[ $rc -eq 0 ]'
-assert "11 lines of Mid" '[ $(grep -c "^Mid " $OUT/stdout) -eq 11 ] && [ $(wc -l <$OUT/stdout) -eq 11 ]'
+assert "8 lines of Mid" '[ $(grep -c "^Mid " $OUT/stdout) -eq 8 ] && [ $(wc -l <$OUT/stdout) -eq 8 ]'
 assert "warns" 'grep -q "warning: the template has no @@structures" $OUT/stderr'
 end
 
