@@ -33,6 +33,10 @@
 #define COUNT_DEFAULT	1000000	/* primordia when count is not given */
 #define COUNT_MOST	5000000	/* 180 bytes each: under 1 GiB */
 #define PROGRESS_EVERY	16384
+#define LAW_SAMPLES	4096	/* of the radius law, to size the maps */
+#define CELLS_PER_ORGAN	64	/* of the cover map, at most */
+#define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
+				   walk's steps vanish in double precision */
 
 void	(*model_progress)(long long done, int last);
 
@@ -146,6 +150,14 @@ grid_grow(struct coll *C)
 	struct slot *old = C->slot;
 	size_t oldn = old != NULL ? (size_t)C->mask + 1 : 0;
 	size_t n = oldn != 0 ? 2 * oldn : 1024;
+
+	/*
+	 * Room for a cell per primordium at half load, so that inserting
+	 * them all again below cannot call for another growth (which would
+	 * insert some twice).
+	 */
+	while (n < 2 * (C->n + 1))
+		n *= 2;
 
 	C->slot = xcalloc(n, sizeof(*C->slot));
 	for (size_t i = 0; i < n; i++)
@@ -535,6 +547,60 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 	}
 }
 
+/*
+ * What the maps need before placement starts: the smallest radius the
+ * law gives up to the bound N, and the area N primordia can cover
+ * (2 sqrt 3 r^2 each, hexagonally packed).  Sampled; a sample the law
+ * cannot give is left out here and reported when placement gets there.
+ */
+static void
+law_extent(const struct coll *C, long long N, double r0, double *rmin,
+    double *area)
+{
+	struct expr_env env = { { 0 }, (uint64_t)C->sc->seed, 0 };
+	long long step = N / LAW_SAMPLES + 1, samples = 0;
+	double sum = 0, r;
+
+	*rmin = r0;
+	if (C->rconst > 0 || expr_is_constant(C->p->radius.e, &r)) {
+		*area = 2 * sqrt(3) * r0 * r0 * (double)N;
+		return;
+	}
+	for (long long n = 0; n < N; n += step) {
+		env.n = n;
+		env.var[V_N] = (double)n;
+		env.var[V_COUNT] = (double)N;
+		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
+		if (expr_eval(C->p->radius.e, &env, &r) != EXPR_OK ||
+		    !(r > 0))
+			continue;
+		*rmin = fmin(*rmin, r);
+		sum += r * r;
+		samples++;
+	}
+	*area = samples ? 2 * sqrt(3) * sum / (double)samples * (double)N :
+	    HUGE_VAL;
+}
+
+/*
+ * The neighbour grid's cells: 8 radii of the primordium being placed,
+ * and at least the reach of the largest placed.  Rebuilt when radii
+ * have fallen or grown by half: a grid sized for other radii makes
+ * each look at many more cells, or many more primordia, than needed.
+ */
+static void
+grid_fit(struct coll *C, double r)
+{
+	double g = fmax(8 * r, r + C->rmax);
+
+	if (C->slot != NULL && g <= 2 * C->g && g >= C->g / 2)
+		return;
+	C->g = g;
+	free(C->slot);
+	C->slot = NULL;
+	grid_grow(C);
+}
+
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
 static int
 place(const struct scene *sc, struct result *res, int how, double rconst,
@@ -545,7 +611,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	const struct collision *P = sc->params;
 	struct coll C = { .sc = sc, .p = P, .nocover = how != PLACE_EXACT,
 	    .rconst = rconst };
-	double (*pts)[2], alpha = sc->divergence, r, eps;
+	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
 
@@ -574,9 +640,27 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	free(pts);
 	if (radius_at(&C, &env, 0, N, &r, &eps) != 0)
 		goto out;
-	C.g = 8 * r;
-	if (!C.nocover)
-		cover_init(&C.cover, &C.cv, r, N);
+	law_extent(&C, N, r, &rmin, &band);
+	if (rmin < R_SMALLEST * fmax(C.cv.length, C.cv.rho_max)) {
+		scene_error(sc, GIVEN_AT(P, CO_RADIUS), "collision.radius "
+		    "%.9g is too small for this receptacle: below %g of its "
+		    "size, %.9g, the placement cannot be resolved", rmin,
+		    R_SMALLEST, fmax(C.cv.length, C.cv.rho_max));
+		goto out;
+	}
+	if (!C.nocover) {
+		/*
+		 * The band N primordia can cover, twice over for loose
+		 * packing, and some rows more.
+		 */
+		double s = C.cv.length;
+
+		if (2 * band < C.cv.area)
+			s = curve_s(&C.cv, curve_t_area(&C.cv, 2 * band, NULL,
+			    NULL, NULL)) + 16 * r;
+		cover_init(&C.cover, &C.cv, rmin, s,
+		    (double)N * CELLS_PER_ORGAN);
+	}
 	/*
 	 * Room for as many as circles of radius r would pack hexagonally,
 	 * and a little more: growing a million by doubling copies it all.
@@ -585,7 +669,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	    1.1 + 4096);
 	C.pr = xcalloc_big(C.cap, sizeof(*C.pr));
 	C.next = xcalloc_big(C.cap, sizeof(*C.next));
-	grid_grow(&C);
+	grid_fit(&C, r);
 	coll_add(&C, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {
 		double a = angle_mod360((double)n, alpha) * (M_PI / 180);
@@ -595,6 +679,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 			goto out;
 		if (eps >= 0)
 			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
+		grid_fit(&C, r);
 		t = brute ? place_brute(&C, t0, c, s, r) :
 		    place_exact(&C, t0, a, c, s, r);
 		if (t > C.cv.tmax)

@@ -27,9 +27,8 @@
 #include "cover.h"
 #include "mem.h"
 
-#define CELL_FRAC	0.6	/* row height, as a fraction of r0 */
+#define CELL_FRAC	0.6	/* row height, as a fraction of r_min */
 #define CELLS_MIN	(1 << 12)
-#define CELLS_PER_ORGAN	32	/* at most, of the count bound */
 #define CELLS_MAX	(1 << 26)
 #define U_NONE		UINT8_MAX
 #define U_STEPS		64	/* steps of the bound per row height: up to 4 rows */
@@ -70,17 +69,27 @@ column_reset(struct cover *cv, int32_t j)
 }
 
 void
-cover_init(struct cover *cv, const struct curve *c, double r0,
-    long long count)
+cover_init(struct cover *cv, const struct curve *c, double r_min,
+    double s_band, double cells_most)
 {
-	double L = c->length, W = 2 * M_PI * c->rho_max, a = CELL_FRAC * r0;
-	double cells, most = (double)count * CELLS_PER_ORGAN;
+	double L = fmin(c->length, s_band), a = CELL_FRAC * r_min;
+	double W = 0, cells, most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX);
 	size_t n;
 
-	if (most < CELLS_MIN)
-		most = CELLS_MIN;
-	if (most > CELLS_MAX)
-		most = CELLS_MAX;
+	/*
+	 * Only the band the primordia can reach is mapped: a small count
+	 * of small primordia covers a strip at the base, and a map of the
+	 * whole receptacle at their size would not fit.  Its columns are
+	 * as wide as the band's widest ring needs.
+	 */
+	cv->band = L < c->length;
+	for (int i = 0; i <= 64; i++) {
+		double p[2];
+
+		curve_eval(c, curve_t(c, L * i / 64), p, NULL);
+		W = fmax(W, p[0]);
+	}
+	W = 2 * M_PI * fmin(W + L / 64, c->rho_max);
 	/*
 	 * Fewer, larger cells if there would be too many: coarser skips.
 	 * A receptacle narrower than a cell has one column, and then
@@ -102,10 +111,11 @@ cover_init(struct cover *cv, const struct curve *c, double r0,
 	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
 	cv->d = xcalloc((size_t)cv->rows, sizeof(*cv->d));
 	for (int32_t k = 0; k <= cv->rows; k++)
-		cv->t_row[k] = k == cv->rows ? c->tmax : curve_t(c, k * a);
+		cv->t_row[k] = k == cv->rows && !cv->band ? c->tmax :
+		    curve_t(c, fmin(k * a, c->length));
 	cv->sub = xcalloc((size_t)cv->rows * COVER_SUB, sizeof(*cv->sub));
 	for (int32_t k = 0; k < cv->rows; k++) {
-		double s0 = k * a, s1 = fmin((k + 1) * a, L), p[2];
+		double s0 = k * a, s1 = fmin((k + 1) * a, c->length), p[2];
 
 		for (int i = 0; i < COVER_SUB; i++) {
 			double *sp = cv->sub[k * COVER_SUB + i];
@@ -135,6 +145,7 @@ cover_init(struct cover *cv, const struct curve *c, double r0,
 		cv->sin_c[j] = sin(phi);
 	}
 	cv->tiles_k = (cv->rows + 7) / 8;
+
 	n = (size_t)cv->tiles_k * (size_t)((cv->cols + 7) / 8) * 64;
 	cv->u = xcalloc_big(n, 1);
 	memset(cv->u, U_NONE, n);
@@ -285,11 +296,14 @@ prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
 	return cv->head[j];
 }
 
-/* Move the walk to the start of row k (past the tip if there is none). */
+/*
+ * Move the walk to the start of row k: past the tip if there is none,
+ * to the band's end if the map ends below the tip.
+ */
 static int
 move_to(const struct cover *cv, double *t, int32_t *row, int32_t k)
 {
-	*t = k == cv->rows ? HUGE_VAL : cv->t_row[k];
+	*t = k == cv->rows && !cv->band ? HUGE_VAL : cv->t_row[k];
 	*row = k;
 	return 1;
 }
@@ -310,6 +324,10 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	int32_t k = *row, h;
 	uint8_t u;
 
+	if (cv->band && *t >= cv->t_row[cv->rows]) {
+		*row = -1;	/* unmapped: the walk goes on alone */
+		return 0;
+	}
 	if (cv->f[j] * cv->q >= r)
 		column_reset(cv, j);
 	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t) ||

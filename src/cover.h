@@ -19,7 +19,9 @@
 struct cover {
 	double		 a;		/* row height, arc length */
 	int32_t		 rows, cols;
-	double		*t_row;		/* rows + 1: t at each row's start */
+	double		*t_row;		/* rows + 1: t at each row's start,
+					   then the band's end */
+	int		 band;		/* the rows end below the tip */
 	double		*rho_c, *z_c;	/* rows: the row's middle point */
 	double		*d;		/* rows: cell points lie this near */
 	double		*cos_c, *sin_c;	/* cols: the column's middle angle */
@@ -45,8 +47,13 @@ struct except {
 	int32_t		 next;		/* in the column's list, or -1 */
 };
 
-void	cover_init(struct cover *, const struct curve *, double r0,
-	    long long count);
+/*
+ * Map the band from the base up to arc length s_band (the whole curve
+ * if it is longer) in cells sized for primordia of radius r_min, at
+ * most cells_most of them (fewer, coarser cells past that).
+ */
+void	cover_init(struct cover *, const struct curve *, double r_min,
+	    double s_band, double cells_most);
 void	cover_free(struct cover *);
 
 /* The column of angle phi (radians, [0, 2 pi)). */
@@ -65,7 +72,7 @@ void	cover_lower(struct cover *, int32_t k, int32_t j, double U);
 /*
  * If t lies in covered cells of column j for radius r, move it past
  * them and return 1; else return 0.  *row is the row of t after, and
- * a guess of it before (-1: none).
+ * a guess of it before (-1: none).  Past the band, never.
  */
 int	cover_skip(struct cover *, double *t, int32_t j, double r,
 	    int32_t *row);

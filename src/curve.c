@@ -514,9 +514,15 @@ convex_radius(const double b[4][2])
 
 		cross[i] = a[0] * c[1] - a[1] * c[0];
 	}
+	/*
+	 * The origin inside the triangle: no lower bound.  A flat
+	 * triangle (a straight piece: the hodograph's points in a line,
+	 * every cross product 0) holds the origin only on its edges, which
+	 * the distances below find; the sign test would say "inside".
+	 */
 	inside = (cross[0] >= 0 && cross[1] >= 0 && cross[2] >= 0) ||
 	    (cross[0] <= 0 && cross[1] <= 0 && cross[2] <= 0);
-	if (inside)
+	if (inside && cross[0] + cross[1] + cross[2] != 0)
 		return 0;
 	m1 = fmin(seg_dist2(d[0], d[1]), fmin(seg_dist2(d[1], d[2]),
 	    seg_dist2(d[2], d[0])));

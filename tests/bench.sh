@@ -42,6 +42,9 @@ echo "$model $csv $bytes $N" | awk '{
 echo "== collision model: exact placement, one core"
 "$TESTBIN/bench_collision"
 
+echo "== collision model on every receptacle, fill and radius law, one core"
+"$TESTBIN/bench_matrix" 2>/dev/null
+
 echo "== inhibition model, one core"
 "$TESTBIN/bench_inhibition"
 

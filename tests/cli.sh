@@ -287,6 +287,15 @@ assert "one warning line" '[ $(wc -l <$OUT/stderr) -eq 1 ] && grep -q "warning: 
 assert "no progress line off a terminal" '! grep -q placed $OUT/stderr'
 end
 
+# A radius a thousand times smaller: only a band at the sphere's pole
+# is reached by the bound, and that is all the placement may look at.
+printf 'model = "collision";\ncollision = { receptacle = { shape = "sphere"; }; radius = 1e-6; };\n' >"$OUT/tiny.cfg"
+try "collision: a tiny radius stops at the default bound too, in seconds" timeout 120 "$PHYLLO" --info "$OUT/tiny.cfg"
+assert "exit 0 (not killed by the timeout)" '[ $rc -eq 0 ]'
+assert "1000000 placed" 'grep -qx "primordia: 1000000" $OUT/stdout'
+assert "the warning" 'grep -q "warning: stopped at 1000000 primordia, the default bound" $OUT/stderr'
+end
+
 # On a terminal (script(1) gives it one), a long placement shows how
 # far it has got, and rubs the line out at the end.
 if command -v script >/dev/null; then

@@ -56,6 +56,15 @@ static const struct {
 	  "0.00005*n\"; }; count = 400;", 1 },
 	{ "disk, wide divergence", "divergence = 99.5; collision = { "
 	  "receptacle = { shape = \"disk\"; }; radius = 0.08; };", 1 },
+	/* A count that covers only a band at the base: a band-sized map. */
+	{ "hemisphere, a band at the base", "collision = { receptacle = { "
+	  "shape = \"hemisphere\"; }; radius = 0.03; }; count = 300;", 1 },
+	{ "disk, a band, radius falling", "collision = { receptacle = { "
+	  "shape = \"disk\"; }; radius = \"0.03 * (1 - 0.8 * t)\"; }; "
+	  "count = 300;", 1 },
+	{ "sphere, a band, radius rising", "collision = { receptacle = { "
+	  "shape = \"sphere\"; }; radius = \"0.02 * (0.5 + t)\"; }; "
+	  "count = 300;", 1 },
 };
 
 static double
@@ -222,6 +231,15 @@ static const struct {
 	  "epsilon = \"r\"; };" },
 	{ "sphere, radius rising", "collision = { receptacle = { shape = "
 	  "\"sphere\"; }; radius = \"0.012 + 0.000001*n\"; };" },
+	/* Bands at the base: maps of the band alone, walks beyond it. */
+	{ "hemisphere, a band of 8000", "collision = { receptacle = { "
+	  "shape = \"hemisphere\"; }; radius = 0.004; }; count = 8000;" },
+	{ "sphere, a band, radius falling 5x", "collision = { receptacle = "
+	  "{ shape = \"sphere\"; }; radius = \"0.005 * (1 - 0.8 * t)\"; }; "
+	  "count = 8000;" },
+	{ "disk, a band, radius rising 3x", "collision = { receptacle = { "
+	  "shape = \"disk\"; }; radius = \"0.002 * (0.5 + t)\"; }; "
+	  "count = 8000;" },
 };
 
 static void

@@ -1,0 +1,159 @@
+/*
+ * bench_matrix.c - the collision model on every receptacle, fill and
+ * radius law (make bench): microseconds per primordium, the time of 3x
+ * the primordia over the time of 1x (3 when the cost per primordium
+ * does not grow), and the bytes per primordium beyond the output.
+ * Each case runs in a child of its own, killed after LIMIT seconds, so
+ * a case that has gone quadratic says so instead of hanging the bench.
+ */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "clock.h"
+#include "model.h"
+#include "scene.h"
+
+#define LIMIT	60	/* seconds a case may take */
+
+static const struct {
+	const char	*name;
+	const char	*shape;
+	double		 r;		/* the radius at organ 0 */
+	double		 area;		/* of the unit preset */
+} receptacles[] = {
+	{ "hemisphere", "hemisphere", 3e-4, 2 * M_PI },
+	{ "disk", "disk", 3e-4, M_PI },
+	{ "sphere", "sphere", 3e-4, 4 * M_PI },
+};
+
+/* %g: the radius at organ 0; the law over t = n / (N - 1). */
+static const struct {
+	const char	*name;
+	const char	*radius;
+	const char	*epsilon;	/* or NULL */
+} laws[] = {
+	{ "constant", "%g", NULL },
+	{ "falling", "%g * (1 - 0.8 * t)", NULL },
+	{ "falling, epsilon r", "%g * (1 - 0.8 * t)", "r" },
+	{ "rising", "%g * (0.5 + t)", NULL },
+};
+
+/*
+ * Place count primordia (0: the default bound) in a child; its seconds
+ * and bytes beyond the output through a pipe, or -1 when it failed or
+ * took longer than LIMIT.
+ */
+static double
+timed(const char *shape, const char *law, const char *eps, double r,
+    long long count, size_t *placed, double *bytes)
+{
+	char text[1024], radius[128];
+	int fd[2];
+	pid_t pid;
+	double got[3] = { -1, 0, 0 };
+	int st;
+
+	snprintf(radius, sizeof(radius), law, r);
+	snprintf(text, sizeof(text), "model = \"collision\";\n%s%.0lld%s"
+	    "collision = { receptacle = { shape = \"%s\"; }; radius = \"%s\";"
+	    " %s%s%s };\n", count ? "count = " : "", count,
+	    count ? ";\n" : "", shape, radius, eps ? "epsilon = \"" : "",
+	    eps ? eps : "", eps ? "\";" : "");
+	if (pipe(fd) != 0 || (pid = fork()) < 0)
+		return -1;
+	if (pid == 0) {
+		struct scene sc;
+		struct result res = { 0 };
+		struct rusage ru;
+		double t0, t1, out[3];
+
+		close(fd[0]);
+		alarm(LIMIT);
+		if (scene_load_buffer(&sc, "matrix.cfg", text, strlen(text)) != 0)
+			_exit(1);
+		t0 = now();
+		if (collision_place(&sc, &res, PLACE_EXACT) != 0)
+			_exit(1);
+		t1 = now();
+		getrusage(RUSAGE_SELF, &ru);
+		out[0] = t1 - t0;
+		out[1] = (double)res.count;
+		out[2] = ((double)ru.ru_maxrss * 1024 -
+		    (double)res.count * sizeof(struct organ)) /
+		    (double)(res.count ? res.count : 1);
+		if (write(fd[1], out, sizeof(out)) != (ssize_t)sizeof(out))
+			_exit(1);
+		_exit(0);
+	}
+	close(fd[1]);
+	if (read(fd[0], got, sizeof(got)) != (ssize_t)sizeof(got))
+		got[0] = -1;
+	close(fd[0]);
+	waitpid(pid, &st, 0);
+	*placed = (size_t)got[1];
+	*bytes = got[2];
+	return got[0];
+}
+
+static void
+row(const char *what, double t, size_t n, double bytes)
+{
+	if (t < 0)
+		printf("  %-34s over %d s (or failed)\n", what, LIMIT);
+	else
+		printf("  %-34s %8zu in %6.2f s = %5.2f us each, %4.0f bytes "
+		    "each\n", what, n, t, t / (double)n * 1e6, bytes);
+	fflush(stdout);
+}
+
+int
+main(void)
+{
+	signal(SIGPIPE, SIG_IGN);
+	for (size_t i = 0; i < sizeof(receptacles) / sizeof(*receptacles);
+	    i++)
+		for (size_t j = 0; j < sizeof(laws) / sizeof(*laws); j++) {
+			const char *sh = receptacles[i].shape;
+			double r = receptacles[i].r, t1, t3, tf, b1, b3, bf;
+			size_t n1, n3, nf;
+
+			printf("%s, %s radius:\n", receptacles[i].name,
+			    laws[j].name);
+			t1 = timed(sh, laws[j].radius, laws[j].epsilon, r, 100000,
+			    &n1, &b1);
+			row("a band at the base, 100,000", t1, n1, b1);
+			t3 = timed(sh, laws[j].radius, laws[j].epsilon, r, 300000,
+			    &n3, &b3);
+			row("a band at the base, 300,000", t3, n3, b3);
+			if (t1 > 0 && t3 > 0)
+				printf("  %-34s %.1f (3 when the cost per "
+				    "primordium holds)\n", "time(300,000) / "
+				    "time(100,000):", t3 / t1);
+			/*
+			 * Up to the tip: a first radius at which some
+			 * 200,000 fill it (area A, 2 sqrt 3 r^2 each), the
+			 * count a little over, so the law runs its course.
+			 */
+			tf = timed(sh, laws[j].radius, laws[j].epsilon,
+			    sqrt(receptacles[i].area / (200000 * 3.81)),
+			    260000, &nf, &bf);
+			row("up to the tip (or 260,000)", tf, nf, bf);
+		}
+	for (size_t i = 0; i < sizeof(receptacles) / sizeof(*receptacles);
+	    i++) {
+		double t, b;
+		size_t n;
+
+		printf("%s, radius 1e-5, the default bound:\n",
+		    receptacles[i].name);
+		t = timed(receptacles[i].shape, "%g", NULL, 1e-5, 0, &n, &b);
+		row("stops at the bound", t, n, b);
+	}
+	return 0;
+}
