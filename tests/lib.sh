@@ -28,6 +28,13 @@ try() {
 assert() {
 	eval "$2" || bad="$bad; $1"
 }
+# refused MESSAGE: the command just tried was a usage error: exit 2, and
+# MESSAGE (a grep pattern) on standard error.
+refused() {
+	msg=$1
+	assert "exit 2" '[ $rc -eq 2 ]'
+	assert "says \"$msg\"" 'grep -q -- "$msg" "$OUT/stderr"'
+}
 end() {
 	if [ -z "$bad" ]; then
 		ok "$what"
