@@ -59,6 +59,21 @@ covered(const struct cover *cv, uint8_t u, double r)
 	return u != U_NONE && u * cv->q < r;
 }
 
+/* The least bound in steps that is not covered for radius r. */
+static inline uint8_t
+threshold(const struct cover *cv, double r)
+{
+	double s = ceil(r * cv->inv_q);
+	int u = s < U_NONE ? (int)s : U_NONE;
+
+	/* As covered() decides, rounding and all. */
+	while (u > 0 && !covered(cv, (uint8_t)(u - 1), r))
+		u--;
+	while (u < U_NONE && covered(cv, (uint8_t)u, r))
+		u++;
+	return (uint8_t)u;
+}
+
 /* Start column j's prefix again: radii fell below what it proved. */
 static void
 column_reset(struct cover *cv, int32_t j)
@@ -155,6 +170,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->last = xcalloc((size_t)cv->cols, sizeof(*cv->last));
 	for (int32_t j = 0; j < cv->cols; j++)
 		column_reset(cv, j);
+	cv->lim_r = 0;		/* no walk yet */
 }
 
 void
@@ -321,8 +337,8 @@ int
 cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 {
 	/* Walks mostly step a row at a time: try the next row first. */
-	int32_t k = *row, h;
-	uint8_t u;
+	int32_t k = *row, h, e;
+	uint8_t lim, most = 0;
 
 	if (cv->band && *t >= cv->t_row[cv->rows]) {
 		*row = -1;	/* unmapped: the walk goes on alone */
@@ -336,27 +352,35 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	*row = k;
 	h = cv->head[j];
 	if (k < h) {
-		int32_t e = prefix_next(cv, j, k, r);
-
+		e = prefix_next(cv, j, k, r);
 		return e == k ? 0 : move_to(cv, t, row, e);
 	}
-	/* At the head, on a tile boundary: eight rows in one go. */
-	if (k == h && (k & 7) == 0 && k + 8 <= cv->rows) {
-		const uint8_t *run = cell(cv, k, j);
-		uint8_t most = 0;
-
-		for (int i = 0; i < 8; i++)
-			most = run[i] > most ? run[i] : most;
-		if (covered(cv, most, r)) {
-			prefix_grow(cv, j, 8, most);
-			return move_to(cv, t, row, k + 8);
-		}
+	/*
+	 * At or past the head: every covered row from here in one go,
+	 * a tile's eight rows of the column at a time (they lie side by
+	 * side), and the prefix grows by them when the walk is at its head.
+	 */
+	if (r != cv->lim_r) {	/* once a walk */
+		cv->lim = threshold(cv, r);
+		cv->lim_r = r;
 	}
-	if (!covered(cv, u = cell_u(cv, k, j), r))
+	lim = cv->lim;
+	for (e = k; e < cv->rows; ) {
+		const uint8_t *run = cell(cv, e & ~7, j);
+		int i = e & 7, end = cv->rows - (e & ~7) < 8 ?
+		    cv->rows - (e & ~7) : 8;
+
+		for (; i < end && run[i] < lim; i++)
+			most = run[i] > most ? run[i] : most;
+		e = (e & ~7) + i;
+		if (i < end)
+			break;
+	}
+	if (e == k)
 		return 0;
 	if (k == h)
-		prefix_grow(cv, j, 1, u);
-	return move_to(cv, t, row, k + 1);
+		prefix_grow(cv, j, e - k, most);
+	return move_to(cv, t, row, e);
 }
 
 void

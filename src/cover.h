@@ -35,6 +35,9 @@ struct cover {
 	int32_t		*first, *last;	/* cols: their exceptions, or -1 */
 	struct except	*ex;		/* the pool of exceptions */
 	size_t		 nex, exmax;
+	double		 lim_r;		/* the radius of the last walk, */
+	uint8_t		 lim;		/* and the least bound it is not
+					   covered by */
 };
 
 /*
