@@ -142,53 +142,56 @@ cell_of(const struct coll *C, double x, double y, double z, int32_t k[3])
 	k[2] = cell1(z / C->g);
 }
 
-static void grid_insert(struct coll *, int32_t);
-
-static void
-grid_grow(struct coll *C)
+/* Put primordium i in its cell's list; 1 if that took a new slot. */
+static int
+slot_put(struct coll *C, int32_t i)
 {
-	struct slot *old = C->slot;
-	size_t oldn = old != NULL ? (size_t)C->mask + 1 : 0;
-	size_t n = oldn != 0 ? 2 * oldn : 1024;
+	const struct prim *p = &C->pr[i];
+	struct slot *s;
+	int32_t k[3];
+	int fresh;
 
-	/*
-	 * Room for a cell per primordium at half load, so that inserting
-	 * them all again below cannot call for another growth (which would
-	 * insert some twice).
-	 */
-	while (n < 2 * (C->n + 1))
+	cell_of(C, p->x, p->y, p->z, k);
+	s = slot_find(C, k);
+	if ((fresh = s->head < 0))
+		memcpy(s->key, k, sizeof(s->key));
+	C->next[i] = s->head;
+	s->head = i;
+	return fresh;
+}
+
+/*
+ * A table of at least nslots, kept at most half full, with every
+ * primordium in it.  Cells hold many primordia each, so the table is
+ * sized for the cells in use, not for the primordia.
+ */
+static void
+grid_build(struct coll *C, size_t nslots)
+{
+	size_t n = 1024;
+
+	while (n < nslots)
 		n *= 2;
-
-	C->slot = xcalloc(n, sizeof(*C->slot));
-	for (size_t i = 0; i < n; i++)
-		C->slot[i].head = -1;
-	C->mask = (uint32_t)(n - 1);
-	C->used = 0;
-	/* Re-insert every primordium: lists are rebuilt in the new table. */
-	free(old);
-	for (size_t i = 0; i < C->n; i++)
-		grid_insert(C, (int32_t)i);
+	for (;;) {
+		C->slot = xreallocarray(C->slot, n, sizeof(*C->slot));
+		for (size_t i = 0; i < n; i++)
+			C->slot[i].head = -1;
+		C->mask = (uint32_t)(n - 1);
+		C->used = 0;
+		for (size_t i = 0; i < C->n && 2 * C->used <= n; i++)
+			C->used += (size_t)slot_put(C, (int32_t)i);
+		if (2 * C->used <= n)
+			return;
+		n *= 2;		/* the cells outgrew it: again, larger */
+	}
 }
 
 static void
 grid_insert(struct coll *C, int32_t i)
 {
-	const struct prim *p = &C->pr[i];
-	struct slot *s;
-	int32_t k[3];
-
-	cell_of(C, p->x, p->y, p->z, k);
-	s = slot_find(C, k);
-	if (s->head < 0) {
-		if (2 * (C->used + 1) > (size_t)C->mask + 1) {
-			grid_grow(C);	/* inserts i too: it is below C->n */
-			return;
-		}
-		memcpy(s->key, k, sizeof(s->key));
-		C->used++;
-	}
-	C->next[i] = s->head;
-	s->head = i;
+	C->used += (size_t)slot_put(C, i);
+	if (2 * C->used > (size_t)C->mask + 1)
+		grid_build(C, 2 * ((size_t)C->mask + 1));
 }
 
 /*
@@ -596,9 +599,7 @@ grid_fit(struct coll *C, double r)
 	if (C->slot != NULL && g <= 2 * C->g && g >= C->g / 2)
 		return;
 	C->g = g;
-	free(C->slot);
-	C->slot = NULL;
-	grid_grow(C);
+	grid_build(C, 2 * C->used);
 }
 
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
