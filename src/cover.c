@@ -32,6 +32,7 @@
 #define CELLS_MAX	(1 << 26)
 #define U_NONE		UINT8_MAX
 #define U_STEPS		64	/* steps of the bound per row height: up to 4 rows */
+#define TIGHT		0.5	/* of r_min: a bound worth the closer look */
 #define GROW		1.05	/* the largest next radius worth a bound, per r */
 
 /*
@@ -117,6 +118,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 			a = L / most * 1.01;
 	}
 	cv->a = a;
+	cv->tight = TIGHT * r_min;
 	cv->rows = (int32_t)fmax(1, ceil(L / a));
 	cv->cols = (int32_t)fmax(1, ceil(W / a));
 	cv->q = a / U_STEPS;
@@ -125,6 +127,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->rho_c = xcalloc((size_t)cv->rows, sizeof(*cv->rho_c));
 	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
 	cv->d = xcalloc((size_t)cv->rows, sizeof(*cv->d));
+	cv->h = xcalloc((size_t)cv->rows, sizeof(*cv->h));
 	for (int32_t k = 0; k <= cv->rows; k++)
 		cv->t_row[k] = k == cv->rows && !cv->band ? c->tmax :
 		    curve_t(c, fmin(k * a, c->length));
@@ -150,9 +153,18 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		 */
 		cv->d[k] = (s1 - s0) / 2 + (p[0] + (s1 - s0) / 2) * M_PI /
 		    cv->cols;
+		cv->h[k] = (s1 - s0) / 2;
 	}
 	cv->cos_c = xcalloc((size_t)cv->cols, sizeof(*cv->cos_c));
 	cv->sin_c = xcalloc((size_t)cv->cols, sizeof(*cv->sin_c));
+	cv->cos_e = xcalloc((size_t)cv->cols + 1, sizeof(*cv->cos_e));
+	cv->sin_e = xcalloc((size_t)cv->cols + 1, sizeof(*cv->sin_e));
+	for (int32_t j = 0; j <= cv->cols; j++) {
+		double phi = j * 2 * M_PI / cv->cols;
+
+		cv->cos_e[j] = cos(phi);
+		cv->sin_e[j] = sin(phi);
+	}
 	for (int32_t j = 0; j < cv->cols; j++) {
 		double phi = (j + 0.5) * 2 * M_PI / cv->cols;
 
@@ -180,6 +192,9 @@ cover_free(struct cover *cv)
 	free(cv->rho_c);
 	free(cv->z_c);
 	free(cv->d);
+	free(cv->h);
+	free(cv->cos_e);
+	free(cv->sin_e);
 	free(cv->sub);
 	free(cv->cos_c);
 	free(cv->sin_c);
@@ -232,6 +247,31 @@ cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 	lower(cv, k, j, U);
 }
 
+/*
+ * The squared distance from (x, y, z) to the farthest point of cell
+ * (k, j)'s middle arc (the row's middle, across the column), dz from
+ * its height.  Every point of the cell lies within h[k] of that arc,
+ * along its own meridian (a chord is no longer than its arc), so the
+ * cell's clearance is at most this distance plus h[k], less the radius:
+ * the angular half of the old middle-plus-half-diagonal bound is now
+ * exact.  The distance grows with the angle from the primordium's
+ * meridian, so the farthest point is an edge or the opposite meridian.
+ */
+static inline double
+farthest(const struct cover *cv, int32_t k, int32_t j, double x, double y,
+    double rho, double dz)
+{
+	double rk = cv->rho_c[k], c0 = cv->cos_e[j], s0 = cv->sin_e[j];
+	double c1 = cv->cos_e[j + 1], s1 = cv->sin_e[j + 1], a, b;
+
+	/* Opposite (x, y) inside the column (narrower than pi): sines say. */
+	if (cv->cols >= 3 && -(c0 * y - s0 * x) >= 0 && -(x * s1 - y * c1) >= 0)
+		return (rk + rho) * (rk + rho) + dz * dz;
+	a = (rk * c0 - x) * (rk * c0 - x) + (rk * s0 - y) * (rk * s0 - y);
+	b = (rk * c1 - x) * (rk * c1 - x) + (rk * s1 - y) * (rk * s1 - y);
+	return (a > b ? a : b) + dz * dz;
+}
+
 void
 cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 {
@@ -264,7 +304,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		}
 		for (int32_t dj = lo; dj <= hi; dj++) {
 			int32_t j = jc + dj;
-			double dx, dy, D2;
+			double dx, dy, D2, U;
 			uint8_t u;
 
 			j += j < 0 ? cv->cols : j >= cv->cols ? -cv->cols : 0;
@@ -273,14 +313,21 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			D2 = dx * dx + dy * dy + dz * dz;
 			if (D2 >= reach * reach)
 				continue;
-			/* No square root where the bound would not drop. */
+			/*
+			 * No square root where the bound would not drop: the
+			 * farthest point is at least as far as the middle.
+			 */
 			if ((u = *cell(cv, k, j)) != U_NONE) {
-				double L = (u - 2) * cv->q + r - cv->d[k];
+				double L = (u - 2) * cv->q + r - cv->h[k];
 
 				if (L <= 0 || D2 >= L * L)
 					continue;
 			}
-			lower(cv, k, j, sqrt(D2) - r + cv->d[k]);
+			U = sqrt(D2) - r + cv->d[k];
+			if (U >= cv->tight)
+				U = fmin(U, sqrt(farthest(cv, k, j, x, y, rho,
+				    dz)) - r + cv->h[k]);
+			lower(cv, k, j, U);
 		}
 	}
 }

@@ -18,13 +18,16 @@
  */
 struct cover {
 	double		 a;		/* row height, arc length */
+	double		 tight;		/* bounds above this get a closer look */
 	int32_t		 rows, cols;
 	double		*t_row;		/* rows + 1: t at each row's start,
 					   then the band's end */
 	int		 band;		/* the rows end below the tip */
 	double		*rho_c, *z_c;	/* rows: the row's middle point */
 	double		*d;		/* rows: cell points lie this near */
+	double		*h;		/* rows: half the row's arc length */
 	double		*cos_c, *sin_c;	/* cols: the column's middle angle */
+	double		*cos_e, *sin_e;	/* cols + 1: its edges' angles */
 	uint8_t		*u;		/* U in steps of q, in 8 x 8 tiles */
 	int32_t		 tiles_k;	/* tiles up a column */
 	double		 q, inv_q;
