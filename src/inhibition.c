@@ -9,14 +9,16 @@
  * 003's parameter-free Gaussian sum in the angle alone, each primordium
  * a bell exp(-(th - phi)^2) weighted by 1/age, so the newest counts
  * most.  Primordium 0 is at angle 0, primordium 1 opposite; the rest
- * find their angle to 1e-9 rad: candidates in the gaps between recent
- * primordia, then Newton on E' inside the best gaps.
+ * find their angle to 1e-9 rad: the circle is cut at the recent
+ * primordia's angles, lower bounds of E rule out most gaps, and Newton
+ * on E' searches the rest (next_angle): the least of all minima.
  *
- * With the power law, a primordium whose pull on the edge varies by
- * less than 1e-12 of the nearest one's is left out: they are ever
- * farther out, so the sum has a fixed number of terms however many came
- * before.  The Gaussian kernel weighs every primordium by 1/age, which
- * never falls that low: it costs O(n) a primordium, as in the seed.
+ * With the power law, the primordia beyond a radius far_r are summed
+ * as a Fourier series whose moments each plastochron rescales, so a
+ * step costs the same however many came before.  The Gaussian kernel
+ * weighs every primordium by 1/age, which changes every step: its
+ * series is summed again each step, O(n) a primordium, as in the seed,
+ * but each evaluation of E is then a few terms.
  */
 #include <math.h>
 #include <stddef.h>
@@ -84,47 +86,239 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 #define R0		1.0	/* the meristem's radius: the unit */
 #define AGE_MAX		700	/* e^700: the largest radius a double holds */
 #define GROWTH_MIN	0.001	/* the slowest growth searched surely */
+#define MODES		96	/* of the power law's far field */
+#define FAR_TAIL	1e-16	/* its truncation, of a primordium's pull */
+#define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
 
-/* The primordia so far: angle, its cosine and sine; ages from n. */
+/*
+ * The primordia so far: angle, its cosine and sine; ages from n.
+ *
+ * With the power law, the pull of a primordium at radius r on the
+ * edge point at angle th is (R0^2 + r^2 - 2 R0 r cos(th - phi))^-(s/2)
+ * = r^-s sum_j C_j(cos(th - phi)) x^j, x = R0 / r, with C_j the
+ * Gegenbauer polynomials of order s/2 (their generating function), and
+ * C_j(cos a) = sum_i w_ji cos((j - 2i) a).  So the primordia beyond
+ * radius far_r (x below x_far) add up to sum_m Fc_m cos(m th) + Fs_m
+ * sin(m th) over m <= MODES, from the moments sum r^-(s+j) cos(m phi)
+ * and sin(m phi); a plastochron's growth multiplies each by
+ * e^-(s+j)G.  Each primordium joins the moments once and costs nothing
+ * after: near ones are summed one by one, the rest in O(MODES^2) a
+ * primordium however many came before.
+ */
 struct field {
 	const struct inhibition *P;
 	double		*phi, *c, *s;
 	size_t		 n;		/* placed */
 	double		*S;		/* S[n]: G_1 + ... + G_n */
 	double		*r;		/* r[k]: the radius now of the k-th
-					   newest, for the far ones that count */
-	size_t		 near;		/* newest looked at for candidates */
-	size_t		 far;		/* power law: the newest that count */
+					   newest, for the near ones */
+	size_t		 near;		/* newest that cut the circle */
+	size_t		 from;		/* the oldest summed one by one; the
+					   older are in the moments */
+	int		 moments;	/* 0: every one by one (all pairs) */
+	double		 far_r;		/* the radius where they join them */
 	double		 hs;		/* s / 2 */
+	double		*w;		/* per (j, m): the weight of moment
+					   (j, m) in mode m */
+	double		*Mc, *Ms;	/* the moments, per (j, m) */
+	double		 Fc[MODES + 1], Fs[MODES + 1];	/* the modes */
+	int		 nmodes;	/* of the far field: MODES or GMODES */
+	double		*gt;		/* Gaussian: per primordium cos and
+					   sin (m phi), m <= GMODES */
+	double		 far_slope;	/* the far field's slope, at most */
+	double		 far_curv;	/* and its second derivative */
+	double		 far_least;	/* and its least on the circle */
+	int		 check;		/* test every gap's bounds */
+	long long	 misses;	/* bounds above their gap's least E */
+	double		 floor;		/* the near ones' least pulls, */
+	double		*fl;		/* each, as r */
 };
 
+/* Moments (j, m), m <= j, m = j mod 2, in order of j: where j's start. */
+static size_t
+jm(int j)
+{
+	return (size_t)(j / 2 + 1) * (size_t)(j - j / 2);
+}
+
+#define NMOMENTS	jm(MODES + 1)
+
 /*
- * E, E' and E'' at th over the k newest primordia (all for the
- * Gaussian), each of which has moved out once more since it was born.
+ * The weights, and the far radius: the smallest at which the series
+ * cut after MODES leaves out less than FAR_TAIL of what a primordium
+ * there pulls at most, sum_j (s)_j / j! x^j = (1 - x)^-s.
  */
 static void
-energy(const struct field *F, double th, size_t k, double e[3])
+far_init(struct field *F)
+{
+	double lam = F->hs, a[MODES + 1], lo = 0, hi = 1;
+
+	a[0] = 1;	/* (lam)_i / i! */
+	for (int i = 1; i <= MODES; i++)
+		a[i] = a[i - 1] * (lam + i - 1) / i;
+	F->w = xcalloc(NMOMENTS, sizeof(*F->w));
+	for (int j = 0; j <= MODES; j++)
+		for (int i = 0; i <= j; i++) {
+			int m = abs(j - 2 * i);
+
+			F->w[jm(j) + (size_t)(m / 2)] += a[i] * a[j - i];
+		}
+	for (int it = 0; it < 60; it++) {
+		double x = (lo + hi) / 2, t = 1, tail = 0, s = 2 * lam;
+
+		for (int j = 1; j < MODES + 4000 && t > 0; j++) {
+			t *= (s + j - 1) / j * x;
+			if (j > MODES)
+				tail += t;
+		}
+		if (tail <= FAR_TAIL * pow(1 - x, -s))
+			lo = x;
+		else
+			hi = x;
+	}
+	F->far_r = R0 / lo;
+	F->Mc = xcalloc(NMOMENTS, sizeof(*F->Mc));
+	F->Ms = xcalloc(NMOMENTS, sizeof(*F->Ms));
+}
+
+/* What bounds the far field: its slope, its curvature, its least. */
+static void
+far_summary(struct field *F)
+{
+	F->far_slope = F->far_curv = 0;
+	F->far_least = F->Fc[0];
+	for (int m = 1; m <= F->nmodes; m++) {
+		double a = hypot(F->Fc[m], F->Fs[m]);
+
+		F->far_slope += m * a;
+		F->far_curv += (double)m * m * a;
+		F->far_least -= a;
+	}
+	F->far_least = fmax(0, F->far_least);
+}
+
+/* The moments after a plastochron of growth g, then with the ones now beyond far_r. */
+static void
+far_step(struct field *F, double g)
+{
+	size_t n = F->n;
+
+	for (int j = 0; j <= MODES; j++) {
+		double f = exp(-(2 * F->hs + j) * g);
+
+		for (size_t k = jm(j); k < jm(j + 1); k++) {
+			F->Mc[k] *= f;
+			F->Ms[k] *= f;
+		}
+	}
+	while (F->from < n && R0 * exp(F->S[n] - F->S[F->from]) >= F->far_r) {
+		double r = R0 * exp(F->S[n] - F->S[F->from]);
+		double pw = pow(r, -2 * F->hs), cm[MODES + 1], sm[MODES + 1];
+		double c1 = F->c[F->from], s1 = F->s[F->from];
+
+		cm[0] = 1;
+		sm[0] = 0;
+		for (int m = 1; m <= MODES; m++) {
+			cm[m] = cm[m - 1] * c1 - sm[m - 1] * s1;
+			sm[m] = sm[m - 1] * c1 + cm[m - 1] * s1;
+		}
+		for (int j = 0; j <= MODES; j++, pw /= r)
+			for (int m = j % 2; m <= j; m += 2) {
+				size_t k = jm(j) + (size_t)(m / 2);
+
+				F->Mc[k] += pw * cm[m];
+				F->Ms[k] += pw * sm[m];
+			}
+		F->from++;
+	}
+	for (int m = 0; m <= MODES; m++)
+		F->Fc[m] = F->Fs[m] = 0;
+	for (int j = 0; j <= MODES; j++)
+		for (int m = j % 2; m <= j; m += 2) {
+			size_t k = jm(j) + (size_t)(m / 2);
+
+			F->Fc[m] += F->w[k] * F->Mc[k];
+			F->Fs[m] += F->w[k] * F->Ms[k];
+		}
+	far_summary(F);
+}
+
+/*
+ * The Gaussian kernel's whole energy as a Fourier series: its bells
+ * summed over their images are (1 + 2 sum e^-(m^2/4) cos(m x)) / (2
+ * sqrt(pi)) (Poisson's summation), which after GMODES terms is exact
+ * to far below a double's precision.  The weights 1 / age change every
+ * step, so the modes are summed again, O(GMODES n), but each energy is
+ * then O(GMODES) instead of three exponentials a primordium.
+ */
+static void
+gauss_step(struct field *F)
+{
+	for (int m = 0; m <= GMODES; m++)
+		F->Fc[m] = F->Fs[m] = 0;
+	for (size_t i = 0; i < F->n; i++) {
+		const double *t = &F->gt[i * 2 * (GMODES + 1)];
+		double w = 1.0 / (double)(F->n - i);	/* 1 / age */
+
+		for (int m = 0; m <= GMODES; m++) {
+			F->Fc[m] += w * t[2 * m];
+			F->Fs[m] += w * t[2 * m + 1];
+		}
+	}
+	for (int m = 0; m <= GMODES; m++) {
+		double a = (m == 0 ? 0.5 : exp(-m * m / 4.0)) / sqrt(M_PI);
+
+		F->Fc[m] *= a;
+		F->Fs[m] *= a;
+	}
+	F->from = F->n;
+	far_summary(F);
+}
+
+/* The far field's E, E', E'' at th, added to e. */
+static void
+far_energy(const struct field *F, double th, double e[3])
+{
+	double c1 = cos(th), s1 = sin(th), cm = 1, sm = 0;
+
+	for (int m = 0; m <= F->nmodes; m++) {
+		double v = F->Fc[m] * cm + F->Fs[m] * sm;
+		double nc;
+
+		e[0] += v;
+		e[1] += m * (F->Fs[m] * cm - F->Fc[m] * sm);
+		e[2] -= (double)m * m * v;
+		nc = cm * c1 - sm * s1;
+		sm = sm * c1 + cm * s1;
+		cm = nc;
+	}
+}
+
+/*
+ * The pull of primordium i (the (n - 1 - i)-th newest, near) at an
+ * angle dist in [0, pi] from it: largest at 0, falling to pi.
+ */
+static double
+pull(const struct field *F, size_t i, double dist)
+{
+	double r = F->r[F->n - 1 - i];
+	double q = R0 * R0 + r * r - 2 * R0 * r * cos(dist);
+
+	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : pow(q, -F->hs);
+}
+
+/*
+ * E, E' and E'' at th: each primordium has moved out once more since
+ * it was born.
+ */
+static void
+energy(const struct field *F, double th, double e[3])
 {
 	double ct = cos(th), st = sin(th);
-	size_t n = F->n, first = k < n ? n - k : 0;
+	size_t n = F->n;
 
 	e[0] = e[1] = e[2] = 0;
-	if (F->P->kernel == K_GAUSSIAN) {
-		for (size_t i = first; i < n; i++) {
-			double w = 1.0 / (double)(n - i);	/* 1 / age */
-			double x = remainder(th - F->phi[i], 2 * M_PI);
-
-			for (int img = -1; img <= 1; img++) {
-				double y = x + img * 2 * M_PI, g = w * exp(-y * y);
-
-				e[0] += g;
-				e[1] += -2 * y * g;
-				e[2] += (4 * y * y - 2) * g;
-			}
-		}
-		return;
-	}
-	for (size_t i = first; i < n; i++) {
+	for (size_t i = F->from; i < n; i++) {
 		double r = F->r[n - 1 - i];
 		/* d^2 = R0^2 + r^2 - 2 R0 r cos(th - phi), and its derivatives. */
 		double cd = ct * F->c[i] + st * F->s[i];
@@ -140,50 +334,24 @@ energy(const struct field *F, double th, size_t k, double e[3])
 		e[1] += -hs * p / q * q1;
 		e[2] += hs * (hs + 1) * p / (q * q) * q1 * q1 - hs * p / q * q2;
 	}
+	if (F->moments)
+		far_energy(F, th, e);
 }
 
 /*
- * The minimum of E (over the first k newest, or all) inside [a, b],
- * from its middle: Newton on E' where E'' > 0, bisection on E''s sign
- * otherwise, to 1e-12 rad.
+ * The minimum of E inside [a, b], from x: Newton on E' where
+ * E'' > 0, bisection on E''s sign otherwise, to 1e-12 rad; or an end,
+ * if that is lower.
  */
-static double	minimise_from(const struct field *, double, double, double,
-		    size_t, double *);
-
 static double
-minimise(const struct field *F, double a, double b, size_t k, double *emin,
-    int *end)
+minimise(const struct field *F, double a, double b, double x, double *emin)
 {
-	double x, e[3], ends[2] = { a, b };
-
-	x = minimise_from(F, a, b, (a + b) / 2, k, emin);
-	/*
-	 * An end of the interval may be lower than the interior's best:
-	 * then the minimum lies beyond it, and *end says which way (-1, 1).
-	 */
-	*end = 0;
-	for (int side = 0; side < 2; side++) {
-		energy(F, ends[side], k, e);
-		if (e[0] < *emin) {
-			*emin = e[0];
-			x = ends[side];
-			*end = side ? 1 : -1;
-		}
-	}
-	return x;
-}
-
-/* Newton from x inside [a, b], as minimise() without the ends. */
-static double
-minimise_from(const struct field *F, double a, double b, double x, size_t k,
-    double *emin)
-{
-	double e[3];
+	double e[3], ends[2] = { a, b };
 
 	for (int it = 0; it < 100; it++) {
 		double nx;
 
-		energy(F, x, k, e);
+		energy(F, x, e);
 		if (e[1] > 0)
 			b = x;
 		else
@@ -197,112 +365,237 @@ minimise_from(const struct field *F, double a, double b, double x, size_t k,
 		}
 		x = nx;
 	}
-	energy(F, x, k, e);
+	energy(F, x, e);
 	*emin = e[0];
+	for (int side = 0; side < 2; side++) {
+		energy(F, ends[side], e);
+		if (e[0] < *emin) {
+			*emin = e[0];
+			x = ends[side];
+		}
+	}
 	return x;
 }
 
+/* The circle cut at a primordium's angle: where, and which. */
+struct cut {
+	double		 th;
+	size_t		 i;
+};
+
 static int
-dcmp(const void *a, const void *b)
+cutcmp(const void *a, const void *b)
 {
-	double x = *(const double *)a, y = *(const double *)b;
+	double x = ((const struct cut *)a)->th, y = ((const struct cut *)b)->th;
 
 	return x < y ? -1 : x > y;
 }
 
-#define CANDIDATES	6
+/* A part of a gap: its ends and their cosines and sines. */
+struct part {
+	double		 lo, hi, cl, sl, ch, sh;
+};
+
+static void
+part_set(struct part *p, double lo, double hi)
+{
+	p->lo = lo;
+	p->hi = hi;
+	p->cl = cos(lo);
+	p->sl = sin(lo);
+	p->ch = cos(hi);
+	p->sh = sin(hi);
+}
+
+/*
+ * The least pull of primordium i anywhere in part p: where the part is
+ * farthest from it, or opposite it.  For the power law from the ends'
+ * cosines and sines alone: no call to the maths library a primordium.
+ */
+static double
+least_pull(const struct field *F, size_t i, const struct part *p)
+{
+	double cd, r, q;
+
+	if (p->hi - p->lo >= M_PI) {
+		double opp = remainder(F->phi[i] + M_PI - p->lo, 2 * M_PI);
+
+		if (opp < 0)
+			opp += 2 * M_PI;
+		if (opp <= p->hi - p->lo)
+			return pull(F, i, M_PI);
+		return pull(F, i, fmax(fabs(remainder(p->lo - F->phi[i], 2 *
+		    M_PI)), fabs(remainder(p->hi - F->phi[i], 2 * M_PI))));
+	}
+	/* Opposite phi inside [lo, hi] (shorter than pi): sines say. */
+	if (F->c[i] * p->sl - F->s[i] * p->cl >= 0 &&
+	    F->s[i] * p->ch - F->c[i] * p->sh >= 0)
+		cd = -1;
+	else
+		cd = fmin(p->cl * F->c[i] + p->sl * F->s[i],
+		    p->ch * F->c[i] + p->sh * F->s[i]);
+	r = F->r[F->n - 1 - i];
+	q = R0 * R0 + r * r - 2 * R0 * r * cd;
+	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : pow(q, -F->hs);
+}
+
+#define BOUND_PARTS	8	/* of a gap, for the closer bounds */
+#define TIERS		4
+
+/* Per tier: how many cuts nearest the gap, 0 for all; how many parts. */
+static const struct {
+	size_t		 cuts;
+	int		 parts;
+} tiers[TIERS] = { { 6, 1 }, { 6, BOUND_PARTS }, { 24, BOUND_PARTS },
+	{ 0, BOUND_PARTS } };
+
+/*
+ * A lower bound of E in gap g, [a, b]: every pull is positive and
+ * falls with the angle from its primordium, so it is at least its
+ * least over the gap, and at least its least anywhere (opposite it):
+ * F->floor sums those.  The closer tiers take the least over each of
+ * BOUND_PARTS parts of the gap (the bound is the least of the parts'),
+ * for more of the primordia nearest in angle; the far field is at
+ * least its value at a part's middle less its largest slope times the
+ * half width, and at least its least on the circle.  *at: the middle
+ * of the part of least bound, where a search should start.
+ */
+static double
+gap_bound(const struct field *F, const struct cut *cuts, size_t k,
+    size_t g, double a, double b, int tier, double *at)
+{
+	int parts = tiers[tier].parts;
+	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k;
+	double h = (b - a) / parts, least = HUGE_VAL;
+
+	if (nc > k)
+		nc = k;
+	for (int p = 0; p < parts; p++) {
+		double lo = a + p * h, sum = F->floor;
+		struct part pt;
+
+		part_set(&pt, lo, lo + h);
+		for (size_t d = 0; d < nc; d++) {
+			/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
+			size_t i = cuts[(g + k + d + 1 - nc / 2) % k].i;
+
+			if (i >= F->from)
+				sum += least_pull(F, i, &pt) -
+				    F->fl[F->n - 1 - i];
+		}
+		/* And the near ones that are not cuts. */
+		if (tiers[tier].cuts == 0)
+			for (size_t i = F->from; i + k < F->n; i++)
+				sum += least_pull(F, i, &pt) -
+				    F->fl[F->n - 1 - i];
+		if (F->moments && tier >= 2) {
+			double e[3] = { 0, 0, 0 };
+
+			/* Taylor's, with the largest curvature. */
+			far_energy(F, lo + h / 2, e);
+			sum += fmax(F->far_least, e[0] - fabs(e[1]) * h / 2 -
+			    F->far_curv * h * h / 8);
+		} else if (F->moments)
+			sum += F->far_least;
+		if (sum < least) {
+			least = sum;
+			*at = lo + h / 2;
+		}
+	}
+	return least;
+}
+
+/*
+ * For the tests: every tier's bound of every gap against the least E
+ * the search finds in it.  A bound above it is wrong, and would have
+ * let the search pass over the gap holding the minimum.
+ */
+static void
+check_bounds(struct field *F, const struct cut *cuts, size_t k)
+{
+	for (size_t g = 0; g < k; g++) {
+		double a = cuts[g].th, b = g + 1 < k ? cuts[g + 1].th :
+		    cuts[0].th + 2 * M_PI, at, e;
+
+		if (!(b - a >= 1e-12))
+			continue;
+		minimise(F, a, b, (a + b) / 2, &e);
+		for (int t = 0; t < TIERS; t++)
+			if (gap_bound(F, cuts, k, g, a, b, t, &at) > e *
+			    (1 + 1e-12))
+				F->misses++;
+	}
+}
 
 /*
  * The angle of least inhibition on the edge.  The circle is cut at the
- * angles of the near newest primordia; each gap's least near-energy at
- * its middle ranks it, and the best few are searched for the minimum of
- * the whole energy.
+ * angles of the near newest primordia, so that each gap holds one
+ * minimum.  A gap whose lower bound is above the least E found cannot
+ * hold the minimum: the gap of least bound is taken next, its bound
+ * made closer, and searched when its closest bound still says it may
+ * hold the minimum.  As exact as a search of every gap, and most gaps
+ * are passed on their first bounds.
  */
 static double
-next_angle(struct field *F, double *gaps)
+next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
+    double *at)
 {
-	size_t k = F->near < F->n ? F->near : F->n, best[CANDIDATES];
-	double bestE[CANDIDATES], th = 0, emin = HUGE_VAL, ba = 0, bb = 0;
-	int nb = 0;
+	size_t k = F->near < F->n ? F->near : F->n;
+	double th = 0, emin = HUGE_VAL;
 
-	for (size_t i = 0; i < k; i++)
-		gaps[i] = remainder(F->phi[F->n - 1 - i], 2 * M_PI) + M_PI;
-	qsort(gaps, k, sizeof(*gaps), dcmp);
-	gaps[k] = gaps[0] + 2 * M_PI;
-	for (size_t g = 0; g < k; g++) {
-		double e[3], mid = (gaps[g] + gaps[g + 1]) / 2;
-		int j;
-
-		if (gaps[g + 1] - gaps[g] < 1e-12)
-			continue;
-		energy(F, mid, k, e);
-		/* Keep the CANDIDATES lowest, sorted. */
-		for (j = nb; j > 0 && bestE[j - 1] > e[0]; j--)
-			if (j < CANDIDATES) {
-				bestE[j] = bestE[j - 1];
-				best[j] = best[j - 1];
-			}
-		if (j < CANDIDATES) {
-			bestE[j] = e[0];
-			best[j] = g;
-			if (nb < CANDIDATES)
-				nb++;
-		}
+	for (size_t i = 0; i < k; i++) {
+		cuts[i].i = F->n - 1 - i;
+		cuts[i].th = remainder(F->phi[cuts[i].i], 2 * M_PI);
 	}
-	for (int j = 0; j < nb; j++) {
-		size_t g = best[j], all = F->P->kernel == K_GAUSSIAN ? F->n :
-		    F->far;
-		int end, way = 0, steps = 0;
-		double e, x, off = 0, a, b;
+	qsort(cuts, k, sizeof(*cuts), cutcmp);
+	/* Opposite each primordium its pull is least: the floor of E. */
+	F->floor = 0;
+	for (size_t i = F->from; i < F->n; i++) {
+		double *fl = &F->fl[F->n - 1 - i], r = F->r[F->n - 1 - i];
 
-		/*
-		 * Follow the slope of the near energy across gap ends into
-		 * the neighbours (a turn back means the minimum is the end
-		 * itself); then the whole energy from there, whose far part
-		 * is smooth and small, inside the same gap.
-		 */
-		for (;;) {
-			a = gaps[g] + off;
-			b = gaps[g + 1] + off;
-			x = minimise(F, a, b, k, &e, &end);
-			if (end == 0 || (way != 0 && end != way) ||
-			    ++steps > (int)k)
-				break;
-			way = end;
-			if (end > 0 && ++g == k) {
-				g = 0;
-				off += 2 * M_PI;
-			} else if (end < 0 && g-- == 0) {
-				g = k - 1;
-				off -= 2 * M_PI;
+		/* (R0 + r)^-s, with the common s = 3 without pow(). */
+		*fl = F->hs == 1.5 ? 1 / ((R0 + r) * (R0 + r) * (R0 + r)) :
+		    pow(R0 + r, -2 * F->hs);
+		F->floor += *fl;
+	}
+	for (size_t g = 0; g < k; g++) {
+		double a = cuts[g].th, b = g + 1 < k ? cuts[g + 1].th :
+		    cuts[0].th + 2 * M_PI;
+
+		tier[g] = 0;
+		lb[g] = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
+		    &at[g]) : HUGE_VAL;	/* no room */
+	}
+	for (;;) {
+		size_t g = k;
+		double a, b, e, x;
+
+		for (size_t h = 0; h < k; h++)
+			if (lb[h] < emin && (g == k || lb[h] < lb[g]))
+				g = h;
+		if (g == k)
+			break;
+		a = cuts[g].th;
+		b = g + 1 < k ? cuts[g + 1].th : cuts[0].th + 2 * M_PI;
+		if (tier[g] + 1 < TIERS) {
+			double to = at[g], bound = gap_bound(F, cuts, k, g, a, b,
+			    ++tier[g], &to);
+
+			if (bound > lb[g]) {
+				lb[g] = bound;
+				at[g] = to;
 			}
+			continue;
 		}
-		/*
-		 * The whole sum once at the near minimum: its value less
-		 * E'^2 / 2E'' foretells the whole minimum there, which ranks
-		 * the candidates; only the best is then refined.
-		 */
-		if (all > k) {
-			double f[3];
-
-			energy(F, x, all, f);
-			e = f[2] > 0 ? f[0] - f[1] * f[1] / (2 * f[2]) : f[0];
-		}
+		lb[g] = HUGE_VAL;
+		x = minimise(F, a, b, at[g], &e);
 		if (e < emin) {
 			emin = e;
 			th = x;
-			ba = a;
-			bb = b;
 		}
 	}
-	/*
-	 * The whole sum may move the minimum a little past the near gap's
-	 * end (an old, weak primordium's angle): refine with room on
-	 * either side; Newton from so near stays in this minimum's well.
-	 */
-	if (nb > 0 && (F->P->kernel == K_GAUSSIAN ? F->n : F->far) > k)
-		th = minimise_from(F, ba - (bb - ba), bb + (bb - ba), th,
-		    F->P->kernel == K_GAUSSIAN ? F->n : F->far, &emin);
+	if (F->check)
+		check_bounds(F, cuts, k);
 	return th;
 }
 
@@ -312,30 +605,19 @@ field_add(struct field *F, double th)
 	F->phi[F->n] = th;
 	F->c[F->n] = cos(th);
 	F->s[F->n] = sin(th);
-	F->n++;
-}
+	if (F->gt != NULL) {	/* the Gaussian's cos and sin (m th) */
+		double *t = &F->gt[F->n * 2 * (GMODES + 1)];
 
-/*
- * The power law's cut: how many of the newest count, those farther out
- * pulling on the edge with a variation below 1e-12 of the nearest's
- * pull.  Radii only grow, so the ones left out stay out.
- */
-static size_t
-far_count(const struct field *F)
-{
-	double s = F->P->exponent;
-	double delta = R0 * (exp(F->S[F->n] - F->S[F->n - 1]) - 1);
-	double nearest = pow(delta, -s);
-	size_t k = F->far;
-
-	while (k < F->n) {
-		double D = R0 * (exp(F->S[F->n] - F->S[F->n - 1 - k]) - 1);
-
-		if (D > 2 * R0 && s * R0 * pow(D, -s - 1) < 1e-12 * nearest)
-			break;
-		k++;
+		t[0] = 1;
+		t[1] = 0;
+		for (int m = 1; m <= GMODES; m++) {
+			t[2 * m] = t[2 * m - 2] * F->c[F->n] - t[2 * m - 1] *
+			    F->s[F->n];
+			t[2 * m + 1] = t[2 * m - 1] * F->c[F->n] + t[2 * m - 2] *
+			    F->s[F->n];
+		}
 	}
-	return k;
+	F->n++;
 }
 
 /*
@@ -395,13 +677,16 @@ settled(const double *phi, size_t n, double *mean, double *spread)
 }
 
 int
-inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
+inhibition_place(const struct scene *sc, struct result *res, int how)
 {
 	const struct inhibition *P = sc->params;
 	struct field F = { .P = P, .hs = P->exponent / 2 };
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	size_t N;
-	double *gaps, mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
+	double *lb, *at, mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
+	struct cut *cuts;
+	size_t terms = 0;
+	int *tier;
 
 	if (!sc->given[S_COUNT]) {
 		scene_error(sc, 1, "missing setting 'count'");
@@ -465,8 +750,23 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 	F.c = xcalloc(N, sizeof(*F.c));
 	F.s = xcalloc(N, sizeof(*F.s));
 	F.r = xcalloc(N + 1, sizeof(*F.r));
+	F.fl = xcalloc(N + 1, sizeof(*F.fl));
 	/* Room for the most gaps any step looks at (near_count()). */
-	gaps = xcalloc(near_count(gmin) + 2, sizeof(*gaps));
+	cuts = xcalloc(near_count(gmin) + 1, sizeof(*cuts));
+	lb = xcalloc(near_count(gmin) + 1, sizeof(*lb));
+	tier = xcalloc(near_count(gmin) + 1, sizeof(*tier));
+	at = xcalloc(near_count(gmin) + 1, sizeof(*at));
+	/*
+	 * The far field, but for the power law's reference sum of all
+	 * pairs; the Gaussian's is all of it.
+	 */
+	F.moments = P->kernel == K_GAUSSIAN || !(how & INHIB_ALL_PAIRS);
+	F.check = how & INHIB_CHECK_BOUNDS;
+	F.nmodes = P->kernel == K_GAUSSIAN ? GMODES : MODES;
+	if (P->kernel == K_GAUSSIAN)
+		F.gt = xcalloc(N * 2 * (GMODES + 1), sizeof(*F.gt));
+	else if (F.moments)
+		far_init(&F);
 
 	for (size_t n = 0; n < N; n++) {
 		/*
@@ -475,16 +775,19 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 		 * field's features would rank the wrong ones.
 		 */
 		F.near = near_count(n > 0 ? F.S[n] - F.S[n - 1] : F.S[1]);
-		if (n >= 2)
-			F.far = P->kernel == K_POWER && !all_pairs ?
-			    far_count(&F) : n;
+		if (P->kernel == K_GAUSSIAN)
+			gauss_step(&F);
+		else if (F.moments && n > 0)
+			far_step(&F, F.S[n] - F.S[n - 1]);
 		/* Moved out by the growth of every plastochron since birth. */
 		if (P->kernel == K_POWER)
-			for (size_t k = 0; k < n && (k < F.far || k < F.near);
-			    k++)
+			for (size_t k = 0; k < n && (k < n - F.from ||
+			    k < F.near); k++)
 				F.r[k] = R0 * exp(F.S[n] - F.S[n - 1 - k]);
+		if (n - F.from > terms)
+			terms = n - F.from;
 		field_add(&F, n == 0 ? 0 : n == 1 ? M_PI : next_angle(&F,
-		    gaps));
+		    cuts, lb, tier, at));
 		if (model_progress != NULL && n % 16384 == 0 && n > 0)
 			model_progress((long long)n, 0);
 	}
@@ -535,13 +838,23 @@ inhibition_place(const struct scene *sc, struct result *res, int all_pairs)
 	result_info_text(res, "regime", fabs(mean - 180) < 5 ? "distichous" :
 	    fabs(mean - GOLDEN_ANGLE) < 2 ? "fibonacci" :
 	    fabs(mean - 99.5016) < 2 ? "lucas" : "other");
-	result_info(res, "terms", 1, (double)F.far);
+	result_info(res, "terms", 1, (double)terms);
+	if (F.check)
+		result_info(res, "bound misses", 1, (double)F.misses);
 	free(F.phi);
 	free(F.c);
 	free(F.s);
 	free(F.S);
 	free(F.r);
-	free(gaps);
+	free(F.fl);
+	free(F.gt);
+	free(cuts);
+	free(lb);
+	free(tier);
+	free(at);
+	free(F.w);
+	free(F.Mc);
+	free(F.Ms);
 	return 0;
 }
 

@@ -45,8 +45,15 @@ enum place {
 	PLACE_BRUTE	/* every earlier primordium at finely spaced t */
 };
 int	collision_place(const struct scene *, struct result *, int how);
-/* The inhibition model; all_pairs: every primordium, no cut-off (bench). */
-int	inhibition_place(const struct scene *, struct result *, int all_pairs);
+/*
+ * The inhibition model.  how: 0, or INHIB_ALL_PAIRS: the power law
+ * summed one by one, no far field (the bench's reference); and/or
+ * INHIB_CHECK_BOUNDS: every gap searched too, and --info's "bound
+ * misses" counts the gap bounds above the least E found in their gap
+ * (the tests': it must be 0).
+ */
+enum { INHIB_ALL_PAIRS = 1, INHIB_CHECK_BOUNDS = 2 };
+int	inhibition_place(const struct scene *, struct result *, int how);
 
 /* The receptacle a collision scene gave, for the tests. */
 const struct receptacle *collision_receptacle(const struct scene *);

@@ -227,6 +227,34 @@ settles(const char *what, const char *cfg, double want, double tol, int fib)
 	scene_free(&sc);
 }
 
+/*
+ * The gap search is exact only if its lower bounds are: every tier's
+ * bound of every gap, at every step, at most the least E in that gap.
+ * (The search would still mostly find the right gap with a wrong bound,
+ * so the minima above alone would not notice.)
+ */
+static void
+bounds(const char *what, const char *cfg)
+{
+	char text[1024];
+	struct scene sc;
+	struct result res = { 0 };
+	double misses;
+
+	snprintf(text, sizeof(text), "model = \"inhibition\";\n%s\n", cfg);
+	if (scene_load_buffer(&sc, "test.cfg", text, strlen(text)) != 0 ||
+	    inhibition_place(&sc, &res, INHIB_CHECK_BOUNDS) != 0) {
+		check(0, "%s: runs", what);
+		scene_free(&sc);
+		return;
+	}
+	misses = info(&res, "bound misses", 0);
+	check(misses == 0, "%s: no gap's lower bound is above the least energy "
+	    "in it (%g above, %zu steps)", what, misses, res.count);
+	result_free(&res);
+	scene_free(&sc);
+}
+
 int
 main(void)
 {
@@ -240,6 +268,14 @@ main(void)
 	    "= 0.001; };", 0.001, 3, 0, 97);
 	minima("power law s = 2, G = 0.1", "count = 150; inhibition = { "
 	    "growth = 0.1; exponent = 2; };", 0.1, 2, 0, 7);
+	bounds("bounds, power law, G = 0.02", "count = 150; inhibition = { "
+	    "growth = 0.02; };");
+	bounds("bounds, power law, G = 0.003", "count = 150; inhibition = { "
+	    "growth = 0.003; };");
+	bounds("bounds, power law s = 6, G = 0.2", "count = 120; inhibition = "
+	    "{ growth = 0.2; exponent = 6; };");
+	bounds("bounds, gaussian kernel", "count = 120; inhibition = { kernel "
+	    "= \"gaussian\"; };");
 	minima("gaussian kernel", "count = 150; inhibition = { kernel = "
 	    "\"gaussian\"; };", 0, 0, 1, 7);
 	settles("slow growth, G = 0.01", "count = 600; inhibition = { growth "
