@@ -466,10 +466,19 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 {
 	int parts = tiers[tier].parts;
 	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k;
-	double h = (b - a) / parts, least = HUGE_VAL;
+	double h = (b - a) / parts, least = HUGE_VAL, far = 0;
 
 	if (nc > k)
 		nc = k;
+	if (F->moments && tier >= 2) {
+		/* Smooth beside the near ones: Taylor's, over the whole gap. */
+		double e[3] = { 0, 0, 0 };
+
+		far_energy(F, (a + b) / 2, e);
+		far = fmax(F->far_least, e[0] - fabs(e[1]) * (b - a) / 2 -
+		    F->far_curv * (b - a) * (b - a) / 8);
+	} else if (F->moments)
+		far = F->far_least;
 	for (int p = 0; p < parts; p++) {
 		double lo = a + p * h, sum = F->floor;
 		struct part pt;
@@ -488,17 +497,8 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			for (size_t i = F->from; i + k < F->n; i++)
 				sum += least_pull(F, i, &pt) -
 				    F->fl[F->n - 1 - i];
-		if (F->moments && tier >= 2) {
-			double e[3] = { 0, 0, 0 };
-
-			/* Taylor's, with the largest curvature. */
-			far_energy(F, lo + h / 2, e);
-			sum += fmax(F->far_least, e[0] - fabs(e[1]) * h / 2 -
-			    F->far_curv * h * h / 8);
-		} else if (F->moments)
-			sum += F->far_least;
-		if (sum < least) {
-			least = sum;
+		if (sum + far < least) {
+			least = sum + far;
 			*at = lo + h / 2;
 		}
 	}
