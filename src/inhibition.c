@@ -131,7 +131,7 @@ struct field {
 	int		 check;		/* test every gap's bounds */
 	long long	 misses;	/* bounds above their gap's least E */
 	double		 floor;		/* the near ones' least pulls, */
-	double		*fl;		/* each, as r */
+	double		*fl;		/* each, indexed as r */
 };
 
 /* Moments (j, m), m <= j, m = j mod 2, in order of j: where j's start. */
@@ -197,7 +197,10 @@ far_summary(struct field *F)
 	F->far_least = fmax(0, F->far_least);
 }
 
-/* The moments after a plastochron of growth g, then with the ones now beyond far_r. */
+/*
+ * The moments after a plastochron of growth g, with the primordia it
+ * took beyond far_r; then the modes, and what bounds them.
+ */
 static void
 far_step(struct field *F, double g)
 {
