@@ -298,16 +298,14 @@ far_energy(const struct field *F, double th, double e[3])
 }
 
 /*
- * The pull of primordium i (the (n - 1 - i)-th newest, near) at an
- * angle dist in [0, pi] from it: largest at 0, falling to pi.
+ * The power law's pull at squared distance q, q^-(s/2): the common
+ * s = 3 and 2 without pow().
  */
-static double
-pull(const struct field *F, size_t i, double dist)
+static inline double
+pull_at(const struct field *F, double q)
 {
-	double r = F->r[F->n - 1 - i];
-	double q = R0 * R0 + r * r - 2 * R0 * r * cos(dist);
-
-	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : pow(q, -F->hs);
+	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : F->hs == 1 ? 1 / q :
+	    pow(q, -F->hs);
 }
 
 /*
@@ -328,11 +326,8 @@ energy(const struct field *F, double th, double e[3])
 		double sd = st * F->c[i] - ct * F->s[i];
 		double q = R0 * R0 + r * r - 2 * R0 * r * cd;
 		double q1 = 2 * R0 * r * sd, q2 = 2 * R0 * r * cd;
-		double hs = F->hs, p;
+		double hs = F->hs, p = pull_at(F, q);
 
-		/* q^-hs, with the common s = 3 and 2 without pow(). */
-		p = hs == 1.5 ? 1 / (q * sqrt(q)) : hs == 1 ? 1 / q :
-		    pow(q, -hs);
 		e[0] += p;
 		e[1] += -hs * p / q * q1;
 		e[2] += hs * (hs + 1) * p / (q * q) * q1 * q1 - hs * p / q * q2;
@@ -394,6 +389,13 @@ cutcmp(const void *a, const void *b)
 	return x < y ? -1 : x > y;
 }
 
+/* Where gap g, from cut g, ends: at the next cut, round the circle. */
+static inline double
+gap_end(const struct cut *cuts, size_t k, size_t g)
+{
+	return g + 1 < k ? cuts[g + 1].th : cuts[0].th + 2 * M_PI;
+}
+
 /* A part of a gap: its ends and their cosines and sines. */
 struct part {
 	double		 lo, hi, cl, sl, ch, sh;
@@ -418,28 +420,33 @@ part_set(struct part *p, double lo, double hi)
 static double
 least_pull(const struct field *F, size_t i, const struct part *p)
 {
-	double cd, r, q;
+	double cd, r = F->r[F->n - 1 - i];
 
-	if (p->hi - p->lo >= M_PI) {
+	if (p->hi - p->lo >= M_PI) {	/* the first few steps' wide gaps */
 		double opp = remainder(F->phi[i] + M_PI - p->lo, 2 * M_PI);
 
 		if (opp < 0)
 			opp += 2 * M_PI;
-		if (opp <= p->hi - p->lo)
-			return pull(F, i, M_PI);
-		return pull(F, i, fmax(fabs(remainder(p->lo - F->phi[i], 2 *
-		    M_PI)), fabs(remainder(p->hi - F->phi[i], 2 * M_PI))));
-	}
-	/* Opposite phi inside [lo, hi] (shorter than pi): sines say. */
-	if (F->c[i] * p->sl - F->s[i] * p->cl >= 0 &&
+		cd = opp <= p->hi - p->lo ? -1 : cos(fmax(fabs(remainder(p->lo -
+		    F->phi[i], 2 * M_PI)), fabs(remainder(p->hi - F->phi[i], 2 *
+		    M_PI))));
+	} else if (F->c[i] * p->sl - F->s[i] * p->cl >= 0 &&
 	    F->s[i] * p->ch - F->c[i] * p->sh >= 0)
-		cd = -1;
+		cd = -1;	/* opposite phi inside: sines say */
 	else
 		cd = fmin(p->cl * F->c[i] + p->sl * F->s[i],
 		    p->ch * F->c[i] + p->sh * F->s[i]);
-	r = F->r[F->n - 1 - i];
-	q = R0 * R0 + r * r - 2 * R0 * r * cd;
-	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : pow(q, -F->hs);
+	return pull_at(F, R0 * R0 + r * r - 2 * R0 * r * cd);
+}
+
+/*
+ * How much primordium i pulls in part p above its floor, the least it
+ * pulls anywhere; 0 for one in the far field, which is bounded apart.
+ */
+static double
+above_floor(const struct field *F, size_t i, const struct part *p)
+{
+	return i >= F->from ? least_pull(F, i, p) - F->fl[F->n - 1 - i] : 0;
 }
 
 #define TIERS		4
@@ -489,19 +496,14 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		struct part pt;
 
 		part_set(&pt, lo, lo + h);
-		for (size_t d = 0; d < nc; d++) {
-			/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
-			size_t i = cuts[(g + k + d + 1 - nc / 2) % k].i;
-
-			if (i >= F->from)
-				sum += least_pull(F, i, &pt) -
-				    F->fl[F->n - 1 - i];
-		}
+		/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
+		for (size_t d = 0; d < nc; d++)
+			sum += above_floor(F, cuts[(g + k + d + 1 - nc / 2) %
+			    k].i, &pt);
 		/* And the near ones that are not cuts. */
 		if (tiers[tier].cuts == 0)
 			for (size_t i = F->from; i + k < F->n; i++)
-				sum += least_pull(F, i, &pt) -
-				    F->fl[F->n - 1 - i];
+				sum += above_floor(F, i, &pt);
 		if (sum + far < least) {
 			least = sum + far;
 			*at = lo + h / 2;
@@ -519,8 +521,7 @@ static void
 check_bounds(struct field *F, const struct cut *cuts, size_t k)
 {
 	for (size_t g = 0; g < k; g++) {
-		double a = cuts[g].th, b = g + 1 < k ? cuts[g + 1].th :
-		    cuts[0].th + 2 * M_PI, at, e;
+		double a = cuts[g].th, b = gap_end(cuts, k, g), at, e;
 
 		if (!(b - a >= 1e-12))
 			continue;
@@ -558,14 +559,11 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 	for (size_t i = F->from; i < F->n; i++) {
 		double *fl = &F->fl[F->n - 1 - i], r = F->r[F->n - 1 - i];
 
-		/* (R0 + r)^-s, with the common s = 3 without pow(). */
-		*fl = F->hs == 1.5 ? 1 / ((R0 + r) * (R0 + r) * (R0 + r)) :
-		    pow(R0 + r, -2 * F->hs);
+		*fl = pull_at(F, (R0 + r) * (R0 + r));
 		F->floor += *fl;
 	}
 	for (size_t g = 0; g < k; g++) {
-		double a = cuts[g].th, b = g + 1 < k ? cuts[g + 1].th :
-		    cuts[0].th + 2 * M_PI;
+		double a = cuts[g].th, b = gap_end(cuts, k, g);
 
 		tier[g] = 0;
 		lb[g] = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
@@ -581,7 +579,7 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 		if (g == k)
 			break;
 		a = cuts[g].th;
-		b = g + 1 < k ? cuts[g + 1].th : cuts[0].th + 2 * M_PI;
+		b = gap_end(cuts, k, g);
 		if (tier[g] + 1 < TIERS) {
 			double to = at[g], bound = gap_bound(F, cuts, k, g, a, b,
 			    ++tier[g], &to);

@@ -20,14 +20,21 @@
 #include "scene.h"
 #include "check.h"
 
+/* Load an inhibition scene from its settings. */
 static int
-run(const char *cfg, struct scene *sc, struct result *res)
+load(const char *cfg, struct scene *sc)
 {
 	char text[1024];
 
-	*res = (struct result){0};
 	snprintf(text, sizeof(text), "model = \"inhibition\";\n%s\n", cfg);
-	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
+	return scene_load_buffer(sc, "test.cfg", text, strlen(text));
+}
+
+static int
+run(const char *cfg, struct scene *sc, struct result *res)
+{
+	*res = (struct result){0};
+	if (load(cfg, sc) != 0)
 		return -1;
 	return model_run(sc, res);
 }
@@ -236,13 +243,11 @@ settles(const char *what, const char *cfg, double want, double tol, int fib)
 static void
 bounds(const char *what, const char *cfg)
 {
-	char text[1024];
 	struct scene sc;
 	struct result res = { 0 };
 	double misses;
 
-	snprintf(text, sizeof(text), "model = \"inhibition\";\n%s\n", cfg);
-	if (scene_load_buffer(&sc, "test.cfg", text, strlen(text)) != 0 ||
+	if (load(cfg, &sc) != 0 ||
 	    inhibition_place(&sc, &res, INHIB_CHECK_BOUNDS) != 0) {
 		check(0, "%s: runs", what);
 		scene_free(&sc);
