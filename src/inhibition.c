@@ -401,17 +401,6 @@ struct part {
 	double		 lo, hi, cl, sl, ch, sh;
 };
 
-static void
-part_set(struct part *p, double lo, double hi)
-{
-	p->lo = lo;
-	p->hi = hi;
-	p->cl = cos(lo);
-	p->sl = sin(lo);
-	p->ch = cos(hi);
-	p->sh = sin(hi);
-}
-
 /*
  * The least pull of primordium i anywhere in part p: where the part is
  * farthest from it, or opposite it.  For the power law from the ends'
@@ -478,7 +467,8 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 {
 	int parts = tiers[tier].parts;
 	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k;
-	double h = (b - a) / parts, least = HUGE_VAL, far = 0;
+	double h = (b - a) / parts, least = HUGE_VAL, far = 0, ch = 1, sh = 0;
+	struct part pt;
 
 	if (nc > k)
 		nc = k;
@@ -491,11 +481,25 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		    F->far_curv * (b - a) * (b - a) / 8);
 	} else if (F->moments)
 		far = F->far_least;
+	/* The parts' ends: the cuts' own cosines, turned by h between. */
+	pt.lo = a;
+	pt.cl = F->c[cuts[g].i];
+	pt.sl = F->s[cuts[g].i];
+	if (parts > 1) {
+		ch = cos(h);
+		sh = sin(h);
+	}
 	for (int p = 0; p < parts; p++) {
 		double lo = a + p * h, sum = F->floor;
-		struct part pt;
 
-		part_set(&pt, lo, lo + h);
+		pt.hi = p + 1 < parts ? lo + h : b;
+		if (p + 1 < parts) {
+			pt.ch = pt.cl * ch - pt.sl * sh;
+			pt.sh = pt.sl * ch + pt.cl * sh;
+		} else {
+			pt.ch = F->c[cuts[(g + 1) % k].i];
+			pt.sh = F->s[cuts[(g + 1) % k].i];
+		}
 		/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
 		for (size_t d = 0; d < nc; d++)
 			sum += above_floor(F, cuts[(g + k + d + 1 - nc / 2) %
@@ -508,6 +512,9 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			least = sum + far;
 			*at = lo + h / 2;
 		}
+		pt.lo = pt.hi;
+		pt.cl = pt.ch;
+		pt.sl = pt.sh;
 	}
 	return least;
 }
@@ -534,6 +541,48 @@ check_bounds(struct field *F, const struct cut *cuts, size_t k)
 }
 
 /*
+ * A binary heap of gaps by their bounds lb[], least first and, among
+ * equal bounds, the first gap first: heap[0] holds the count, the gaps
+ * start at heap[1].
+ */
+static inline int
+heap_less(const double *lb, size_t a, size_t b)
+{
+	return lb[a] < lb[b] || (lb[a] == lb[b] && a < b);
+}
+
+static void
+heap_push(size_t *heap, size_t g, const double *lb)
+{
+	size_t i = ++heap[0];
+
+	for (; i > 1 && heap_less(lb, g, heap[i / 2]); i /= 2)
+		heap[i] = heap[i / 2];
+	heap[i] = g;
+}
+
+static size_t
+heap_pop(size_t *heap, const double *lb)
+{
+	size_t top = heap[1], last = heap[heap[0]--], n = heap[0], i = 1;
+
+	for (;;) {
+		size_t c = 2 * i;
+
+		if (c > n)
+			break;
+		if (c + 1 <= n && heap_less(lb, heap[c + 1], heap[c]))
+			c++;
+		if (!heap_less(lb, heap[c], last))
+			break;
+		heap[i] = heap[c];
+		i = c;
+	}
+	heap[i] = last;
+	return top;
+}
+
+/*
  * The angle of least inhibition on the edge.  The circle is cut at the
  * angles of the near newest primordia, so that each gap holds one
  * minimum.  A gap whose lower bound is above the least E found cannot
@@ -544,11 +593,12 @@ check_bounds(struct field *F, const struct cut *cuts, size_t k)
  */
 static double
 next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
-    double *at)
+    double *at, size_t *heap)
 {
 	size_t k = F->near < F->n ? F->near : F->n;
 	double th = 0, emin = HUGE_VAL;
 
+	heap[0] = 0;
 	for (size_t i = 0; i < k; i++) {
 		cuts[i].i = F->n - 1 - i;
 		cuts[i].th = remainder(F->phi[cuts[i].i], 2 * M_PI);
@@ -569,17 +619,13 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 		lb[g] = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
 		    &at[g]) : HUGE_VAL;	/* no room */
 	}
-	for (;;) {
-		size_t g = k;
-		double a, b, e, x;
+	for (size_t g = 0; g < k; g++)
+		heap_push(heap, g, lb);
+	/* The gap of least bound next, while it is below the least E. */
+	while (heap[0] > 0 && lb[heap[1]] < emin) {
+		size_t g = heap_pop(heap, lb);
+		double a = cuts[g].th, b = gap_end(cuts, k, g), e, x;
 
-		for (size_t h = 0; h < k; h++)
-			if (lb[h] < emin && (g == k || lb[h] < lb[g]))
-				g = h;
-		if (g == k)
-			break;
-		a = cuts[g].th;
-		b = gap_end(cuts, k, g);
 		if (tier[g] + 1 < TIERS) {
 			double to = at[g], bound = gap_bound(F, cuts, k, g, a, b,
 			    ++tier[g], &to);
@@ -588,9 +634,9 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 				lb[g] = bound;
 				at[g] = to;
 			}
+			heap_push(heap, g, lb);
 			continue;
 		}
-		lb[g] = HUGE_VAL;
 		x = minimise(F, a, b, at[g], &e);
 		if (e < emin) {
 			emin = e;
@@ -688,7 +734,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	size_t N;
 	double *lb, *at, mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
 	struct cut *cuts;
-	size_t terms = 0;
+	size_t terms = 0, *heap;
 	int *tier;
 
 	if (!sc->given[S_COUNT]) {
@@ -759,6 +805,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	lb = xcalloc(near_count(gmin) + 1, sizeof(*lb));
 	tier = xcalloc(near_count(gmin) + 1, sizeof(*tier));
 	at = xcalloc(near_count(gmin) + 1, sizeof(*at));
+	heap = xcalloc(near_count(gmin) + 2, sizeof(*heap));
 	/*
 	 * The far field, but for the power law's reference sum of all
 	 * pairs; the Gaussian's is all of it.
@@ -790,7 +837,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		if (n - F.from > terms)
 			terms = n - F.from;
 		field_add(&F, n == 0 ? 0 : n == 1 ? M_PI : next_angle(&F,
-		    cuts, lb, tier, at));
+		    cuts, lb, tier, at, heap));
 		if (model_progress != NULL && n % 16384 == 0 && n > 0)
 			model_progress((long long)n, 0);
 	}
@@ -855,6 +902,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(lb);
 	free(tier);
 	free(at);
+	free(heap);
 	free(F.w);
 	free(F.Mc);
 	free(F.Ms);
