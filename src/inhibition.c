@@ -105,6 +105,14 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
  * after: near ones are summed one by one, the rest in O(MODES^2) a
  * primordium however many came before.
  */
+/* A cut's primordium as the bounds want it: in the cuts' order. */
+struct cutp {
+	double		 c, s;		/* cos and sin of its angle */
+	double		 q0, r2;	/* R0^2 + r^2 and 2 R0 r */
+	double		 fl;		/* its floor */
+	double		 w;		/* 1, or 0 in the far field */
+};
+
 struct field {
 	const struct inhibition *P;
 	double		*phi, *c, *s;
@@ -132,6 +140,7 @@ struct field {
 	long long	 misses;	/* bounds above their gap's least E */
 	double		 floor;		/* the near ones' least pulls, */
 	double		*fl;		/* each, indexed as r */
+	struct cutp	*cp;		/* the cuts in order, twice round */
 };
 
 /* Moments (j, m), m <= j, m = j mod 2, in order of j: where j's start. */
@@ -429,6 +438,21 @@ least_pull(const struct field *F, size_t i, const struct part *p)
 }
 
 /*
+ * The same, above_floor(), for cut u in a part narrower than pi,
+ * without a branch the compiler must keep.
+ */
+static inline double
+cut_above(const struct field *F, const struct cutp *u, const struct part *p)
+{
+	int opp = u->c * p->sl - u->s * p->cl >= 0 &&
+	    u->s * p->ch - u->c * p->sh >= 0;
+	double a = p->cl * u->c + p->sl * u->s, b = p->ch * u->c + p->sh *
+	    u->s, cd = opp ? -1 : a < b ? a : b;
+
+	return u->w * pull_at(F, u->q0 - u->r2 * cd) - u->fl;
+}
+
+/*
  * How much primordium i pulls in part p above its floor, the least it
  * pulls anywhere; 0 for one in the far field, which is bounded apart.
  */
@@ -469,9 +493,11 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k;
 	double h = (b - a) / parts, least = HUGE_VAL, far = 0, ch = 1, sh = 0;
 	struct part pt;
+	size_t first;
 
 	if (nc > k)
 		nc = k;
+	first = (g + k + 1 - nc / 2) % k;
 	if (F->moments && tier >= 2) {
 		/* Smooth beside the near ones: Taylor's, over the whole gap. */
 		double e[3] = { 0, 0, 0 };
@@ -501,9 +527,13 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			pt.sh = F->s[cuts[(g + 1) % k].i];
 		}
 		/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
-		for (size_t d = 0; d < nc; d++)
-			sum += above_floor(F, cuts[(g + k + d + 1 - nc / 2) %
-			    k].i, &pt);
+		if (pt.hi - pt.lo < M_PI)
+			for (size_t d = 0; d < nc; d++)
+				sum += cut_above(F, &F->cp[first + d], &pt);
+		else
+			for (size_t d = 0; d < nc; d++)
+				sum += above_floor(F, cuts[(first + d) % k].i,
+				    &pt);
 		/* And the near ones that are not cuts. */
 		if (tiers[tier].cuts == 0)
 			for (size_t i = F->from; i + k < F->n; i++)
@@ -611,6 +641,14 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 
 		*fl = pull_at(F, (R0 + r) * (R0 + r));
 		F->floor += *fl;
+	}
+	for (size_t c = 0; c < 2 * k; c++) {
+		size_t i = cuts[c % k].i;
+		double r = F->r[F->n - 1 - i];
+
+		F->cp[c] = (struct cutp){ F->c[i], F->s[i], R0 * R0 + r * r,
+		    2 * R0 * r, i >= F->from ? F->fl[F->n - 1 - i] : 0,
+		    i >= F->from };
 	}
 	for (size_t g = 0; g < k; g++) {
 		double a = cuts[g].th, b = gap_end(cuts, k, g);
@@ -806,6 +844,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	tier = xcalloc(near_count(gmin) + 1, sizeof(*tier));
 	at = xcalloc(near_count(gmin) + 1, sizeof(*at));
 	heap = xcalloc(near_count(gmin) + 2, sizeof(*heap));
+	F.cp = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cp));
 	/*
 	 * The far field, but for the power law's reference sum of all
 	 * pairs; the Gaussian's is all of it.
@@ -903,6 +942,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(tier);
 	free(at);
 	free(heap);
+	free(F.cp);
 	free(F.w);
 	free(F.Mc);
 	free(F.Ms);
