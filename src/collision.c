@@ -281,10 +281,10 @@ static int
 refine(struct coll *C, int32_t k, int32_t j, double r)
 {
 	const struct cover *cv = &C->cover;
-	double phi0 = j * 2 * M_PI / cv->cols, dphi = 2 * M_PI / cv->cols;
+	double phi0, mid[2], dphi = cover_span(cv, k, j, &phi0, mid);
 	double worst = 0, q = cv->d[k] + r + C->rmax, cs[COVER_SUB][2];
-	double mx = cv->rho_c[k] * cv->cos_c[j], my = cv->rho_c[k] *
-	    cv->sin_c[j], mz = cv->z_c[k];
+	double mx = cv->rho_c[k] * mid[0], my = cv->rho_c[k] * mid[1];
+	double mz = cv->z_c[k];
 	struct near {
 		double	 x, y, z, r, d2;
 	} near[64];

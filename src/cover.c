@@ -38,14 +38,23 @@
 /*
  * Cells are stored in tiles of 8 rows by 8 columns, a cache line each:
  * cover_add writes a patch of cells around a primordium and a walk
- * reads up a column, and either way few lines are touched.
+ * reads up a column, and either way few lines are touched.  Row k's
+ * column jz counts among its own row's cols >> z.
  */
+static inline uint8_t *
+cell_z(const struct cover *cv, int32_t k, int32_t jz)
+{
+	int32_t b = k >> 3;
+	size_t tile = cv->bbase[b] + (size_t)(jz >> 3) * (size_t)cv->bstride[b];
+
+	return &cv->u[tile * 64 + (size_t)((jz & 7) << 3 | (k & 7))];
+}
+
+/* The cell of row k that column j of the widest rows passes through. */
 static inline uint8_t *
 cell(const struct cover *cv, int32_t k, int32_t j)
 {
-	size_t tile = (size_t)(j >> 3) * (size_t)cv->tiles_k + (size_t)(k >> 3);
-
-	return &cv->u[tile * 64 + (size_t)((j & 7) << 3 | (k & 7))];
+	return cell_z(cv, k, j >> cv->bz[k >> 3]);
 }
 
 static inline uint8_t
@@ -90,7 +99,8 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 {
 	double L = fmin(c->length, s_band), a = CELL_FRAC * r_min;
 	double W = 0, cells, most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX);
-	size_t n;
+	size_t n = 0;
+	int32_t blocks;
 
 	/*
 	 * Only the band the primordia can reach is mapped: a small count
@@ -121,6 +131,11 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->tight = TIGHT * r_min;
 	cv->rows = (int32_t)fmax(1, ceil(L / a));
 	cv->cols = (int32_t)fmax(1, ceil(W / a));
+	/* Halvings down to 16 columns, so cols is a multiple of 2^zmax. */
+	for (cv->zmax = 0; cv->zmax + 1 < COVER_Z &&
+	    cv->cols >> (cv->zmax + 5) > 0; cv->zmax++)
+		;
+	cv->cols = (cv->cols + (1 << cv->zmax) - 1) >> cv->zmax << cv->zmax;
 	cv->q = a / U_STEPS;
 	cv->inv_q = U_STEPS / a;
 	cv->t_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->t_row));
@@ -131,9 +146,46 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	for (int32_t k = 0; k <= cv->rows; k++)
 		cv->t_row[k] = k == cv->rows && !cv->band ? c->tmax :
 		    curve_t(c, fmin(k * a, c->length));
-	cv->sub = xcalloc((size_t)cv->rows * COVER_SUB, sizeof(*cv->sub));
 	for (int32_t k = 0; k < cv->rows; k++) {
 		double s0 = k * a, s1 = fmin((k + 1) * a, c->length), p[2];
+
+		curve_eval(c, curve_t(c, (s0 + s1) / 2), p, NULL);
+		cv->rho_c[k] = p[0];
+		cv->z_c[k] = p[1];
+		cv->h[k] = (s1 - s0) / 2;
+	}
+	blocks = (cv->rows + 7) / 8;
+	cv->bz = xcalloc((size_t)blocks, sizeof(*cv->bz));
+	cv->bbase = xcalloc((size_t)blocks, sizeof(*cv->bbase));
+	cv->bstride = xcalloc((size_t)blocks, sizeof(*cv->bstride));
+	for (int32_t b = 0; b < blocks; b++) {
+		double rho = 0;
+		int z = 0;
+
+		/* The block's widest ring, rho within h of each middle. */
+		for (int32_t k = 8 * b; k < 8 * b + 8 && k < cv->rows; k++)
+			rho = fmax(rho, cv->rho_c[k] + cv->h[k]);
+		while (z < cv->zmax && (cv->cols >> (z + 1)) * a >= 2 * M_PI *
+		    rho)
+			z++;
+		cv->bz[b] = (uint8_t)z;
+	}
+	/* The tiles: a run of blocks of one z, column by column. */
+	for (int32_t b0 = 0, b1; b0 < blocks; b0 = b1) {
+		int32_t groups = ((cv->cols >> cv->bz[b0]) + 7) / 8;
+
+		for (b1 = b0 + 1; b1 < blocks && cv->bz[b1] == cv->bz[b0]; b1++)
+			;
+		for (int32_t b = b0; b < b1; b++) {
+			cv->bbase[b] = n + (size_t)(b - b0);
+			cv->bstride[b] = b1 - b0;
+		}
+		n += (size_t)groups * (size_t)(b1 - b0);
+	}
+	cv->sub = xcalloc((size_t)cv->rows * COVER_SUB, sizeof(*cv->sub));
+	for (int32_t k = 0; k < cv->rows; k++) {
+		double s0 = k * a, s1 = fmin((k + 1) * a, c->length);
+		int32_t ncol = cv->cols >> cv->bz[k >> 3];
 
 		for (int i = 0; i < COVER_SUB; i++) {
 			double *sp = cv->sub[k * COVER_SUB + i];
@@ -141,39 +193,33 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 			curve_eval(c, curve_t(c, s0 + (s1 - s0) * (i + 0.5) /
 			    COVER_SUB), sp, NULL);
 			sp[2] = (s1 - s0) / (2 * COVER_SUB) + (sp[0] + (s1 - s0) /
-			    (2 * COVER_SUB)) * M_PI / (cv->cols * COVER_SUB);
+			    (2 * COVER_SUB)) * M_PI / ((double)ncol * COVER_SUB);
 		}
-		curve_eval(c, curve_t(c, (s0 + s1) / 2), p, NULL);
-		cv->rho_c[k] = p[0];
-		cv->z_c[k] = p[1];
 		/*
 		 * Along the curve a point is at most (s1 - s0)/2 away (a
 		 * chord is no longer than its arc); about the axis at most
 		 * rho pi / cols, rho at most half a row more than here.
 		 */
-		cv->d[k] = (s1 - s0) / 2 + (p[0] + (s1 - s0) / 2) * M_PI /
-		    cv->cols;
-		cv->h[k] = (s1 - s0) / 2;
+		cv->d[k] = cv->h[k] + (cv->rho_c[k] + cv->h[k]) * M_PI / ncol;
 	}
-	cv->cos_c = xcalloc((size_t)cv->cols, sizeof(*cv->cos_c));
-	cv->sin_c = xcalloc((size_t)cv->cols, sizeof(*cv->sin_c));
-	cv->cos_e = xcalloc((size_t)cv->cols + 1, sizeof(*cv->cos_e));
-	cv->sin_e = xcalloc((size_t)cv->cols + 1, sizeof(*cv->sin_e));
-	for (int32_t j = 0; j <= cv->cols; j++) {
-		double phi = j * 2 * M_PI / cv->cols;
+	for (int z = 0; z <= cv->zmax; z++) {
+		int32_t ncol = cv->cols >> z;
 
-		cv->cos_e[j] = cos(phi);
-		cv->sin_e[j] = sin(phi);
+		cv->mid[z] = xcalloc(2 * (size_t)ncol, sizeof(double));
+		cv->edge[z] = xcalloc(2 * (size_t)ncol + 2, sizeof(double));
+		for (int32_t j = 0; j <= ncol; j++) {
+			double phi = j * 2 * M_PI / ncol;
+
+			cv->edge[z][2 * j] = cos(phi);
+			cv->edge[z][2 * j + 1] = sin(phi);
+			if (j == ncol)
+				break;
+			phi = (j + 0.5) * 2 * M_PI / ncol;
+			cv->mid[z][2 * j] = cos(phi);
+			cv->mid[z][2 * j + 1] = sin(phi);
+		}
 	}
-	for (int32_t j = 0; j < cv->cols; j++) {
-		double phi = (j + 0.5) * 2 * M_PI / cv->cols;
-
-		cv->cos_c[j] = cos(phi);
-		cv->sin_c[j] = sin(phi);
-	}
-	cv->tiles_k = (cv->rows + 7) / 8;
-
-	n = (size_t)cv->tiles_k * (size_t)((cv->cols + 7) / 8) * 64;
+	n *= 64;
 	cv->u = xcalloc_big(n, 1);
 	memset(cv->u, U_NONE, n);
 	cv->head = xcalloc((size_t)cv->cols, sizeof(*cv->head));
@@ -193,11 +239,14 @@ cover_free(struct cover *cv)
 	free(cv->z_c);
 	free(cv->d);
 	free(cv->h);
-	free(cv->cos_e);
-	free(cv->sin_e);
 	free(cv->sub);
-	free(cv->cos_c);
-	free(cv->sin_c);
+	free(cv->bz);
+	free(cv->bbase);
+	free(cv->bstride);
+	for (int z = 0; z < COVER_Z; z++) {
+		free(cv->mid[z]);
+		free(cv->edge[z]);
+	}
 	free(cv->u);
 	free(cv->head);
 	free(cv->f);
@@ -212,6 +261,20 @@ cover_col(const struct cover *cv, double phi)
 	int32_t j = (int32_t)(phi / (2 * M_PI) * cv->cols);
 
 	return j < 0 ? 0 : j >= cv->cols ? cv->cols - 1 : j;
+}
+
+double
+cover_span(const struct cover *cv, int32_t k, int32_t j, double *phi0,
+    double mid[2])
+{
+	int z = cv->bz[k >> 3];
+	int32_t ncol = cv->cols >> z;
+
+	j >>= z;
+	*phi0 = j * 2 * M_PI / ncol;
+	mid[0] = cv->mid[z][2 * j];
+	mid[1] = cv->mid[z][2 * j + 1];
+	return 2 * M_PI / ncol;
 }
 
 int32_t
@@ -231,9 +294,8 @@ cover_row(const struct cover *cv, double t)
 }
 
 static inline void
-lower(struct cover *cv, int32_t k, int32_t j, double U)
+lower_at(const struct cover *cv, uint8_t *u, double U)
 {
-	uint8_t *u = cell(cv, k, j);
 	/* Rounded up, and a step more: a bound must never shrink. */
 	double steps = U * cv->inv_q + 2;
 
@@ -244,7 +306,7 @@ lower(struct cover *cv, int32_t k, int32_t j, double U)
 void
 cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 {
-	lower(cv, k, j, U);
+	lower_at(cv, cell(cv, k, j), U);
 }
 
 /*
@@ -258,14 +320,16 @@ cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
  * meridian, so the farthest point is an edge or the opposite meridian.
  */
 static inline double
-farthest(const struct cover *cv, int32_t k, int32_t j, double x, double y,
+farthest(const struct cover *cv, int32_t k, int32_t jz, double x, double y,
     double rho, double dz)
 {
-	double rk = cv->rho_c[k], c0 = cv->cos_e[j], s0 = cv->sin_e[j];
-	double c1 = cv->cos_e[j + 1], s1 = cv->sin_e[j + 1], a, b;
+	const double *e = &cv->edge[cv->bz[k >> 3]][2 * jz];
+	double rk = cv->rho_c[k], c0 = e[0], s0 = e[1], c1 = e[2], s1 = e[3];
+	double a, b;
 
 	/* Opposite (x, y) inside the column (narrower than pi): sines say. */
-	if (cv->cols >= 3 && -(c0 * y - s0 * x) >= 0 && -(x * s1 - y * c1) >= 0)
+	if ((cv->cols >> cv->bz[k >> 3]) >= 3 && -(c0 * y - s0 * x) >= 0 &&
+	    -(x * s1 - y * c1) >= 0)
 		return (rk + rho) * (rk + rho) + dz * dz;
 	a = (rk * c0 - x) * (rk * c0 - x) + (rk * s0 - y) * (rk * s0 - y);
 	b = (rk * c1 - x) * (rk * c1 - x) + (rk * s1 - y) * (rk * s1 - y);
@@ -279,37 +343,41 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 	int32_t kq = cover_row(cv, t), span, k0, k1;
 	double rows = ceil(GROW * r / cv->a), rho = hypot(x, y);
 	double phi = atan2(y, x);
+	int32_t jphi;
 
 	span = rows < cv->rows ? (int32_t)rows : cv->rows;
 	k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
 	k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
 	if (phi < 0)
 		phi += 2 * M_PI;
+	jphi = cover_col(cv, phi);
 	for (int32_t k = k0; k <= k1; k++) {
 		double rk = cv->rho_c[k], dz = cv->z_c[k] - z;
 		double reach = GROW * r - cv->d[k] + r;
 		double lim = reach * reach - dz * dz, m = 4 * rk * rho;
-		int32_t jc = cover_col(cv, phi), w, lo, hi;
+		int zk = cv->bz[k >> 3];
+		int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, lo, hi;
+		const double *mid = cv->mid[zk];
 
 		if (lim <= 0)
 			continue;
 		/* |P - Q|^2 >= 4 rk rho sin^2(dphi / 2) + dz^2. */
 		w = m > lim ? (int32_t)ceil(asin(sqrt(lim / m)) / M_PI *
-		    cv->cols) + 1 : cv->cols;
+		    ncol) + 1 : ncol;
 		lo = -w;
 		hi = w;
-		if (2 * w + 1 >= cv->cols) {	/* the whole ring, once */
+		if (2 * w + 1 >= ncol) {	/* the whole ring, once */
 			lo = -jc;
-			hi = cv->cols - 1 - jc;
+			hi = ncol - 1 - jc;
 		}
 		for (int32_t dj = lo; dj <= hi; dj++) {
 			int32_t j = jc + dj;
 			double dx, dy, D2, U;
-			uint8_t u;
+			uint8_t u, *up;
 
-			j += j < 0 ? cv->cols : j >= cv->cols ? -cv->cols : 0;
-			dx = rk * cv->cos_c[j] - x;
-			dy = rk * cv->sin_c[j] - y;
+			j += j < 0 ? ncol : j >= ncol ? -ncol : 0;
+			dx = rk * mid[2 * j] - x;
+			dy = rk * mid[2 * j + 1] - y;
 			D2 = dx * dx + dy * dy + dz * dz;
 			if (D2 >= reach * reach)
 				continue;
@@ -317,7 +385,8 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			 * No square root where the bound would not drop: the
 			 * farthest point is at least as far as the middle.
 			 */
-			if ((u = *cell(cv, k, j)) != U_NONE) {
+			up = cell_z(cv, k, j);
+			if ((u = *up) != U_NONE) {
 				double L = (u - 2) * cv->q + r - cv->h[k];
 
 				if (L <= 0 || D2 >= L * L)
@@ -327,7 +396,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			if (U >= cv->tight)
 				U = fmin(U, sqrt(farthest(cv, k, j, x, y, rho,
 				    dz)) - r + cv->h[k]);
-			lower(cv, k, j, U);
+			lower_at(cv, up, U);
 		}
 	}
 }

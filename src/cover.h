@@ -7,6 +7,7 @@
 #include "curve.h"
 
 #define COVER_SUB	4	/* sub-cells a side, for a closer look */
+#define COVER_Z		32	/* column halvings, at most */
 
 /*
  * The receptacle cut into cells: rows of arc length a up the curve,
@@ -26,10 +27,20 @@ struct cover {
 	double		*rho_c, *z_c;	/* rows: the row's middle point */
 	double		*d;		/* rows: cell points lie this near */
 	double		*h;		/* rows: half the row's arc length */
-	double		*cos_c, *sin_c;	/* cols: the column's middle angle */
-	double		*cos_e, *sin_e;	/* cols + 1: its edges' angles */
+	/*
+	 * Rows nearer the axis than the widest have fewer columns, so
+	 * that cells stay about as wide as high: a row of 8 rows has
+	 * cols >> z, and a walk up column j meets cell j >> z there.
+	 */
+	int		 zmax;
+	uint8_t		*bz;		/* per 8 rows: their z */
+	size_t		*bbase;		/* per 8 rows: the tile of their first
+					   8 columns */
+	int32_t		*bstride;	/* per 8 rows: tiles to their next 8 */
+	double		*mid[COVER_Z];	/* per z: cos, sin of each column's
+					   middle angle */
+	double		*edge[COVER_Z];	/* per z: of its edges' (cols + 1) */
 	uint8_t		*u;		/* U in steps of q, in 8 x 8 tiles */
-	int32_t		 tiles_k;	/* tiles up a column */
 	double		 q, inv_q;
 	double		(*sub)[3];	/* rows * COVER_SUB: sub-row middles
 					   (rho, z) and their cells' d */
@@ -62,8 +73,15 @@ void	cover_init(struct cover *, const struct curve *, double r_min,
 	    double s_band, double cells_most);
 void	cover_free(struct cover *);
 
-/* The column of angle phi (radians, [0, 2 pi)). */
+/* The column of angle phi (radians, [0, 2 pi)), in the widest rows. */
 int32_t	cover_col(const struct cover *, double phi);
+
+/*
+ * Cell (k, j)'s angles: its start *phi0, the cosine and sine of its
+ * middle; returns its width.
+ */
+double	cover_span(const struct cover *, int32_t k, int32_t j, double *phi0,
+	    double mid[2]);
 
 /* The row holding t. */
 int32_t	cover_row(const struct cover *, double t);
