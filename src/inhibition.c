@@ -335,11 +335,13 @@ energy(const struct field *F, double th, double e[3])
 		double sd = st * F->c[i] - ct * F->s[i];
 		double q = R0 * R0 + r * r - 2 * R0 * r * cd;
 		double q1 = 2 * R0 * r * sd, q2 = 2 * R0 * r * cd;
-		double hs = F->hs, p = pull_at(F, q);
+		/* One division for p, p / q and p / q^2 (s = 3: and p). */
+		double hs = F->hs, iq = 1 / q, p = hs == 1.5 ? iq * sqrt(iq) :
+		    pull_at(F, q), pq = p * iq;
 
 		e[0] += p;
-		e[1] += -hs * p / q * q1;
-		e[2] += hs * (hs + 1) * p / (q * q) * q1 * q1 - hs * p / q * q2;
+		e[1] += -hs * pq * q1;
+		e[2] += hs * pq * ((hs + 1) * iq * q1 * q1 - q2);
 	}
 	if (F->moments)
 		far_energy(F, th, e);
