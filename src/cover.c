@@ -102,6 +102,8 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	size_t n = 0;
 	int32_t blocks;
 
+	memset(cv, 0, sizeof(*cv));
+
 	/*
 	 * Only the band the primordia can reach is mapped: a small count
 	 * of small primordia covers a strip at the base, and a map of the
@@ -162,10 +164,14 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		double rho = 0;
 		int z = 0;
 
-		/* The block's widest ring, rho within h of each middle. */
+		/*
+		 * The block's widest ring, rho within h of each middle, in
+		 * cells at most half a row wide: halving further saves
+		 * cover_add little and costs bounds slack (measured).
+		 */
 		for (int32_t k = 8 * b; k < 8 * b + 8 && k < cv->rows; k++)
 			rho = fmax(rho, cv->rho_c[k] + cv->h[k]);
-		while (z < cv->zmax && (cv->cols >> (z + 1)) * a >= 2 * M_PI *
+		while (z < cv->zmax && (cv->cols >> (z + 1)) * a >= 4 * M_PI *
 		    rho)
 			z++;
 		cv->bz[b] = (uint8_t)z;
@@ -202,9 +208,12 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		 */
 		cv->d[k] = cv->h[k] + (cv->rho_c[k] + cv->h[k]) * M_PI / ncol;
 	}
-	for (int z = 0; z <= cv->zmax; z++) {
+	for (int32_t b = 0; b < blocks; b++) {
+		int z = cv->bz[b];
 		int32_t ncol = cv->cols >> z;
 
+		if (cv->mid[z] != NULL)
+			continue;	/* only the z in use */
 		cv->mid[z] = xcalloc(2 * (size_t)ncol, sizeof(double));
 		cv->edge[z] = xcalloc(2 * (size_t)ncol + 2, sizeof(double));
 		for (int32_t j = 0; j <= ncol; j++) {

@@ -29,7 +29,7 @@ struct cover {
 	double		*h;		/* rows: half the row's arc length */
 	/*
 	 * Rows nearer the axis than the widest have fewer columns, so
-	 * that cells stay about as wide as high: a row of 8 rows has
+	 * that cells are not slivers there: each run of 8 rows has
 	 * cols >> z, and a walk up column j meets cell j >> z there.
 	 */
 	int		 zmax;
