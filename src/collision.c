@@ -33,6 +33,7 @@
 #define COUNT_DEFAULT	1000000	/* primordia when count is not given */
 #define COUNT_MOST	5000000	/* 180 bytes each: under 1 GiB */
 #define PROGRESS_EVERY	16384
+#define CHECK_EVERY	31	/* cells the tests' check of the map takes */
 #define LAW_SAMPLES	4096	/* of the radius law, to size the maps */
 #define CELLS_PER_ORGAN	64	/* of the cover map, at most */
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
@@ -271,6 +272,16 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 	return 0;
 }
 
+/* Is primordium o's surface within U of p? */
+static int
+surface_within(const struct prim *o, const double p[3], double U)
+{
+	double dx = p[0] - o->x, dy = p[1] - o->y, dz = p[2] - o->z;
+
+	return sqrt(dx * dx + dy * dy + dz * dz) - o->r <= U * (1 + 1e-12) +
+	    1e-15;
+}
+
 /*
  * Try to prove cell (k, j) covered after all: a cell the walk found
  * blocked along its meridian but that cover_add's one bound per cell
@@ -350,6 +361,36 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 	}
 	cover_lower(&C->cover, k, j, worst);
 	return 1;
+}
+
+/*
+ * For cover_check: does some primordium come within U of p, its
+ * surface that is (and a hair more, for rounding)?
+ */
+static int
+near_point(void *ctx, const double p[3], double U)
+{
+	const struct coll *C = ctx;
+	double q = U + C->rmax;
+	int32_t lo[3], hi[3];
+
+	if (box_cells(C, p[0], p[1], p[2], q, lo, hi) > (double)C->n) {
+		for (size_t m = 0; m < C->n; m++)
+			if (surface_within(&C->pr[m], p, U))
+				return 1;
+		return 0;
+	}
+	for (int32_t i = lo[0]; i <= hi[0]; i++)
+		for (int32_t j = lo[1]; j <= hi[1]; j++)
+			for (int32_t k = lo[2]; k <= hi[2]; k++) {
+				int32_t key[3] = { i, j, k };
+
+				for (int32_t m = slot_find(C, key)->head; m >= 0;
+				    m = C->next[m])
+					if (surface_within(&C->pr[m], p, U))
+						return 1;
+			}
+	return 0;
 }
 
 /* The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none. */
@@ -610,7 +651,8 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	int brute = how == PLACE_BRUTE;
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	const struct collision *P = sc->params;
-	struct coll C = { .sc = sc, .p = P, .nocover = how != PLACE_EXACT,
+	struct coll C = { .sc = sc, .p = P, .nocover = how == PLACE_PLAIN ||
+	    how == PLACE_BRUTE,
 	    .rconst = rconst };
 	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
@@ -699,6 +741,9 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	fill_result(&C, alpha, res);
 	result_info(res, "primordia", 1, (double)C.n);
 	result_info(res, "receptacle", 2, C.cv.length, C.cv.rho_max);
+	if (how == PLACE_CHECK)
+		result_info(res, "cover misses", 1, (double)cover_check(&C.cover,
+		    &C.cv, C.rmax, CHECK_EVERY, near_point, &C));
 	rc = 0;
 out:
 	cover_free(&C.cover);

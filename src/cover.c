@@ -508,6 +508,40 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	return move_to(cv, t, row, e);
 }
 
+long long
+cover_check(const struct cover *cv, const struct curve *c, double r,
+    int every, int (*near)(void *, const double p[3], double U), void *ctx)
+{
+	long long misses = 0, seen = 0;
+
+	for (int32_t k = 0; k < cv->rows; k++) {
+		int32_t ncol = cv->cols >> cv->bz[k >> 3];
+		double s0 = k * cv->a, s1 = fmin((k + 1) * cv->a, c->length);
+		double rz[3][2];
+
+		for (int i = 0; i < 3; i++)
+			curve_eval(c, curve_t(c, s0 + (s1 - s0) * i / 2), rz[i],
+			    NULL);
+		for (int32_t jz = 0; jz < ncol; jz++) {
+			uint8_t u = *cell_z(cv, k, jz);
+
+			if (!covered(cv, u, r) || seen++ % every != 0)
+				continue;
+			for (int i = 0; i < 3; i++)
+				for (int b = 0; b < 3; b++) {
+					double phi = (jz + b / 2.0) * 2 * M_PI /
+					    ncol, p[3];
+
+					p[0] = rz[i][0] * cos(phi);
+					p[1] = rz[i][0] * sin(phi);
+					p[2] = rz[i][1];
+					misses += !near(ctx, p, u * cv->q);
+				}
+		}
+	}
+	return misses;
+}
+
 void
 cover_passed(struct cover *cv, int32_t j, int32_t k)
 {

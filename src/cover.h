@@ -102,6 +102,17 @@ int	cover_skip(struct cover *, double *t, int32_t j, double r,
 	    int32_t *row);
 
 /*
+ * For the tests: at 3 x 3 points of every every-th cell whose bound U
+ * is below r (its corners, edges' middles and middle), near(ctx, p, U)
+ * says whether a primordium comes within U of point p.  Returns the
+ * points where none does: 0, or the bounds would let a walk of radius
+ * up to r skip room it should have looked at.
+ */
+long long cover_check(const struct cover *, const struct curve *,
+	    double r, int every,
+	    int (*near)(void *, const double p[3], double U), void *ctx);
+
+/*
  * A walk found column j's head cell k blocked all along its meridian.
  * If the cell cannot now be proven covered everywhere, it becomes an
  * exception; either way the head moves on.

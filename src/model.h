@@ -42,7 +42,11 @@ int	model_run(const struct scene *, struct result *);
 enum place {
 	PLACE_EXACT,	/* the exact walk with the cover map: the model */
 	PLACE_PLAIN,	/* the exact walk alone */
-	PLACE_BRUTE	/* every earlier primordium at finely spaced t */
+	PLACE_BRUTE,	/* every earlier primordium at finely spaced t */
+	PLACE_CHECK	/* PLACE_EXACT, and --info's "cover misses" counts
+			   points of the cover map's cells further from
+			   every primordium than their cell's bound (the
+			   tests': it must be 0) */
 };
 int	collision_place(const struct scene *, struct result *, int how);
 /*

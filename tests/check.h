@@ -6,8 +6,12 @@
 #ifndef CHECK_H
 #define CHECK_H
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
+
+#include "organ.h"
 
 static const char *check_topic = "";
 static int check_failures;
@@ -26,6 +30,16 @@ check(int ok, const char *fmt, ...)
 	va_end(ap);
 	putchar('\n');
 	check_failures += !ok;
+}
+
+/* Value k of a result's --info line key, NaN if there is none. */
+static inline double
+info(const struct result *r, const char *key, int k)
+{
+	for (int i = 0; i < r->ninfo; i++)
+		if (strcmp(r->info[i].key, key) == 0)
+			return r->info[i].val[k];
+	return NAN;
 }
 
 #endif

@@ -39,15 +39,6 @@ run(const char *cfg, struct scene *sc, struct result *res)
 	return model_run(sc, res);
 }
 
-static double
-info(const struct result *r, const char *key, int k)
-{
-	for (int i = 0; i < r->ninfo; i++)
-		if (strcmp(r->info[i].key, key) == 0)
-			return r->info[i].val[k];
-	return NAN;
-}
-
 /* Each organ's distance from the axis in the output. */
 static const double *rho;
 
