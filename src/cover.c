@@ -101,6 +101,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	double W = 0, cells, most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX);
 	size_t n = 0;
 	int32_t blocks;
+	int zcap;
 
 	memset(cv, 0, sizeof(*cv));
 
@@ -133,11 +134,9 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->tight = TIGHT * r_min;
 	cv->rows = (int32_t)fmax(1, ceil(L / a));
 	cv->cols = (int32_t)fmax(1, ceil(W / a));
-	/* Halvings down to 16 columns, so cols is a multiple of 2^zmax. */
-	for (cv->zmax = 0; cv->zmax + 1 < COVER_Z &&
-	    cv->cols >> (cv->zmax + 5) > 0; cv->zmax++)
+	/* Halvings down to 16 columns at most. */
+	for (zcap = 0; zcap + 1 < COVER_Z && cv->cols >> (zcap + 5) > 0; zcap++)
 		;
-	cv->cols = (cv->cols + (1 << cv->zmax) - 1) >> cv->zmax << cv->zmax;
 	cv->q = a / U_STEPS;
 	cv->inv_q = U_STEPS / a;
 	cv->t_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->t_row));
@@ -171,11 +170,16 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		 */
 		for (int32_t k = 8 * b; k < 8 * b + 8 && k < cv->rows; k++)
 			rho = fmax(rho, cv->rho_c[k] + cv->h[k]);
-		while (z < cv->zmax && (cv->cols >> (z + 1)) * a >= 4 * M_PI *
-		    rho)
+		while (z < zcap && (cv->cols >> (z + 1)) * a >= 4 * M_PI * rho)
 			z++;
 		cv->bz[b] = (uint8_t)z;
+		cv->zmax = z > cv->zmax ? z : cv->zmax;
 	}
+	/*
+	 * So that the columns nest, cols is a multiple of 2^zmax: at most
+	 * a sixteenth more, and none more where no row is halved.
+	 */
+	cv->cols = (cv->cols + (1 << cv->zmax) - 1) >> cv->zmax << cv->zmax;
 	/* The tiles: a run of blocks of one z, column by column. */
 	for (int32_t b0 = 0, b1; b0 < blocks; b0 = b1) {
 		int32_t groups = ((cv->cols >> cv->bz[b0]) + 7) / 8;
