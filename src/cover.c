@@ -101,7 +101,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	double W = 0, cells, most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX);
 	size_t n = 0;
 	int32_t blocks;
-	int zcap;
+	int zcap, zmax = 0;
 
 	memset(cv, 0, sizeof(*cv));
 
@@ -173,13 +173,13 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		while (z < zcap && (cv->cols >> (z + 1)) * a >= 4 * M_PI * rho)
 			z++;
 		cv->bz[b] = (uint8_t)z;
-		cv->zmax = z > cv->zmax ? z : cv->zmax;
+		zmax = z > zmax ? z : zmax;
 	}
 	/*
 	 * So that the columns nest, cols is a multiple of 2^zmax: at most
 	 * a sixteenth more, and none more where no row is halved.
 	 */
-	cv->cols = (cv->cols + (1 << cv->zmax) - 1) >> cv->zmax << cv->zmax;
+	cv->cols = (cv->cols + (1 << zmax) - 1) >> zmax << zmax;
 	/* The tiles: a run of blocks of one z, column by column. */
 	for (int32_t b0 = 0, b1; b0 < blocks; b0 = b1) {
 		int32_t groups = ((cv->cols >> cv->bz[b0]) + 7) / 8;
@@ -519,7 +519,8 @@ cover_check(const struct cover *cv, const struct curve *c, double r,
 	long long misses = 0, seen = 0;
 
 	for (int32_t k = 0; k < cv->rows; k++) {
-		int32_t ncol = cv->cols >> cv->bz[k >> 3];
+		int z = cv->bz[k >> 3];
+		int32_t ncol = cv->cols >> z;
 		double s0 = k * cv->a, s1 = fmin((k + 1) * cv->a, c->length);
 		double rz[3][2];
 
@@ -528,17 +529,17 @@ cover_check(const struct cover *cv, const struct curve *c, double r,
 			    NULL);
 		for (int32_t jz = 0; jz < ncol; jz++) {
 			uint8_t u = *cell_z(cv, k, jz);
+			/* Its edges' and middle's angles. */
+			const double *e = &cv->edge[z][2 * jz],
+			    *m = &cv->mid[z][2 * jz], *cs[3] = { e, m, e + 2 };
 
 			if (!covered(cv, u, r) || seen++ % every != 0)
 				continue;
 			for (int i = 0; i < 3; i++)
 				for (int b = 0; b < 3; b++) {
-					double phi = (jz + b / 2.0) * 2 * M_PI /
-					    ncol, p[3];
+					double p[3] = { rz[i][0] * cs[b][0],
+					    rz[i][0] * cs[b][1], rz[i][1] };
 
-					p[0] = rz[i][0] * cos(phi);
-					p[1] = rz[i][0] * sin(phi);
-					p[2] = rz[i][1];
 					misses += !near(ctx, p, u * cv->q);
 				}
 		}

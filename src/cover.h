@@ -32,7 +32,6 @@ struct cover {
 	 * that cells are not slivers there: each run of 8 rows has
 	 * cols >> z, and a walk up column j meets cell j >> z there.
 	 */
-	int		 zmax;
 	uint8_t		*bz;		/* per 8 rows: their z */
 	size_t		*bbase;		/* per 8 rows: the tile of their first
 					   8 columns */

@@ -90,6 +90,14 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 #define FAR_TAIL	1e-16	/* its truncation, of a primordium's pull */
 #define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
 
+/* A cut's primordium as the bounds want it: in the cuts' order. */
+struct cutp {
+	double		 c, s;		/* cos and sin of its angle */
+	double		 q0, r2;	/* R0^2 + r^2 and 2 R0 r */
+	double		 fl;		/* its floor */
+	double		 w;		/* 1, or 0 in the far field */
+};
+
 /*
  * The primordia so far: angle, its cosine and sine; ages from n.
  *
@@ -105,14 +113,6 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
  * after: near ones are summed one by one, the rest in O(MODES^2) a
  * primordium however many came before.
  */
-/* A cut's primordium as the bounds want it: in the cuts' order. */
-struct cutp {
-	double		 c, s;		/* cos and sin of its angle */
-	double		 q0, r2;	/* R0^2 + r^2 and 2 R0 r */
-	double		 fl;		/* its floor */
-	double		 w;		/* 1, or 0 in the far field */
-};
-
 struct field {
 	const struct inhibition *P;
 	double		*phi, *c, *s;
@@ -413,6 +413,20 @@ struct part {
 };
 
 /*
+ * The least cosine of the angle from (c, s) to a point of part p
+ * narrower than pi: -1 if the opposite point is inside (the sines
+ * say), else at the farther end.  No branch the compiler must keep.
+ */
+static inline double
+least_cos(double c, double s, const struct part *p)
+{
+	int opp = c * p->sl - s * p->cl >= 0 && s * p->ch - c * p->sh >= 0;
+	double a = p->cl * c + p->sl * s, b = p->ch * c + p->sh * s;
+
+	return opp ? -1 : a < b ? a : b;
+}
+
+/*
  * The least pull of primordium i anywhere in part p: where the part is
  * farthest from it, or opposite it.  For the power law from the ends'
  * cosines and sines alone: no call to the maths library a primordium.
@@ -430,28 +444,17 @@ least_pull(const struct field *F, size_t i, const struct part *p)
 		cd = opp <= p->hi - p->lo ? -1 : cos(fmax(fabs(remainder(p->lo -
 		    F->phi[i], 2 * M_PI)), fabs(remainder(p->hi - F->phi[i], 2 *
 		    M_PI))));
-	} else if (F->c[i] * p->sl - F->s[i] * p->cl >= 0 &&
-	    F->s[i] * p->ch - F->c[i] * p->sh >= 0)
-		cd = -1;	/* opposite phi inside: sines say */
-	else
-		cd = fmin(p->cl * F->c[i] + p->sl * F->s[i],
-		    p->ch * F->c[i] + p->sh * F->s[i]);
+	} else
+		cd = least_cos(F->c[i], F->s[i], p);
 	return pull_at(F, R0 * R0 + r * r - 2 * R0 * r * cd);
 }
 
-/*
- * The same, above_floor(), for cut u in a part narrower than pi,
- * without a branch the compiler must keep.
- */
+/* The same as above_floor(), for cut u in a part narrower than pi. */
 static inline double
 cut_above(const struct field *F, const struct cutp *u, const struct part *p)
 {
-	int opp = u->c * p->sl - u->s * p->cl >= 0 &&
-	    u->s * p->ch - u->c * p->sh >= 0;
-	double a = p->cl * u->c + p->sl * u->s, b = p->ch * u->c + p->sh *
-	    u->s, cd = opp ? -1 : a < b ? a : b;
-
-	return u->w * pull_at(F, u->q0 - u->r2 * cd) - u->fl;
+	return u->w * pull_at(F, u->q0 - u->r2 * least_cos(u->c, u->s, p)) -
+	    u->fl;
 }
 
 /*
@@ -511,8 +514,8 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		far = F->far_least;
 	/* The parts' ends: the cuts' own cosines, turned by h between. */
 	pt.lo = a;
-	pt.cl = F->c[cuts[g].i];
-	pt.sl = F->s[cuts[g].i];
+	pt.cl = F->cp[g].c;
+	pt.sl = F->cp[g].s;
 	if (parts > 1) {
 		ch = cos(h);
 		sh = sin(h);
@@ -525,8 +528,8 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			pt.ch = pt.cl * ch - pt.sl * sh;
 			pt.sh = pt.sl * ch + pt.cl * sh;
 		} else {
-			pt.ch = F->c[cuts[(g + 1) % k].i];
-			pt.sh = F->s[cuts[(g + 1) % k].i];
+			pt.ch = F->cp[g + 1].c;
+			pt.sh = F->cp[g + 1].s;
 		}
 		/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
 		if (pt.hi - pt.lo < M_PI)
