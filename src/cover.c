@@ -323,30 +323,48 @@ cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 }
 
 /*
- * The squared distance from (x, y, z) to the farthest point of cell
- * (k, j)'s middle arc (the row's middle, across the column), dz from
- * its height.  Every point of the cell lies within h[k] of that arc,
- * along its own meridian (a chord is no longer than its arc), so the
- * cell's clearance is at most this distance plus h[k], less the radius:
- * the angular half of the old middle-plus-half-diagonal bound is now
- * exact.  The distance grows with the angle from the primordium's
- * meridian, so the farthest point is an edge or the opposite meridian.
+ * How far the points of column jz at radius rho_a lie from (x, y) at
+ * radius rho, at most: the squared distance is rho_a^2 + rho^2 - 2
+ * rho_a m, m the least of x cos + y sin over the column's angles.
+ * The distance grows with the angle from (x, y), so m is at an edge,
+ * or -rho when the opposite meridian is inside the column.
+ */
+static inline double
+least_proj(const struct cover *cv, int z, int32_t jz, double x, double y,
+    double rho)
+{
+	const double *e = &cv->edge[z][2 * jz];
+	double a = x * e[0] + y * e[1], b = x * e[2] + y * e[3];
+
+	/* Opposite (x, y) inside the column (narrower than pi): sines say. */
+	if ((cv->cols >> z) >= 3 && -(e[0] * y - e[1] * x) >= 0 &&
+	    -(x * e[3] - y * e[2]) >= 0)
+		return -rho;
+	return a < b ? a : b;
+}
+
+/*
+ * How far the points of cell (k, jz) lie from (x, y, z), at most: each
+ * lies within h[k] / COVER_SUB of the middle arc of its sub-row, along
+ * its own meridian (a chord is no longer than its arc), so the farthest
+ * of those arcs' points, plus that, bounds it.  One middle arc for the
+ * row and h[k] left the bound of cells beside a large primordium a
+ * quarter of r_min loose: with a falling radius, walks stopped there.
  */
 static inline double
 farthest(const struct cover *cv, int32_t k, int32_t jz, double x, double y,
-    double rho, double dz)
+    double z, double rho)
 {
-	const double *e = &cv->edge[cv->bz[k >> 3]][2 * jz];
-	double rk = cv->rho_c[k], c0 = e[0], s0 = e[1], c1 = e[2], s1 = e[3];
-	double a, b;
+	double m = least_proj(cv, cv->bz[k >> 3], jz, x, y, rho);
+	double far = -HUGE_VAL;
 
-	/* Opposite (x, y) inside the column (narrower than pi): sines say. */
-	if ((cv->cols >> cv->bz[k >> 3]) >= 3 && -(c0 * y - s0 * x) >= 0 &&
-	    -(x * s1 - y * c1) >= 0)
-		return (rk + rho) * (rk + rho) + dz * dz;
-	a = (rk * c0 - x) * (rk * c0 - x) + (rk * s0 - y) * (rk * s0 - y);
-	b = (rk * c1 - x) * (rk * c1 - x) + (rk * s1 - y) * (rk * s1 - y);
-	return (a > b ? a : b) + dz * dz;
+	for (int sa = 0; sa < COVER_SUB; sa++) {
+		const double *sp = cv->sub[k * COVER_SUB + sa];
+		double dz = sp[1] - z, f = sp[0] * (sp[0] - 2 * m) + dz * dz;
+
+		far = f > far ? f : far;
+	}
+	return sqrt(far + rho * rho) + cv->h[k] / COVER_SUB;
 }
 
 void
@@ -406,9 +424,11 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 					continue;
 			}
 			U = sqrt(D2) - r + cv->d[k];
-			if (U >= cv->tight)
-				U = fmin(U, sqrt(farthest(cv, k, j, x, y, rho,
-				    dz)) - r + cv->h[k]);
+			if (U >= cv->tight) {
+				double Uf = farthest(cv, k, j, x, y, z, rho) - r;
+
+				U = Uf < U ? Uf : U;
+			}
 			lower_at(cv, up, U);
 		}
 	}
