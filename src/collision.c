@@ -212,28 +212,88 @@ box_cells(const struct coll *C, double x, double y, double z, double q,
 }
 
 /*
+ * The earlier primordia that overlap the new one at a walk's stop, in
+ * the meridian plane: each a disk of squared radius S2 about q, and
+ * where the curve would leave it if it went on along its tangent (not
+ * exact: only which exit to work out first).
+ */
+struct hit {
+	double	 q[2], S2, guess;
+};
+
+#define HITS	32
+
+/*
+ * The furthest exact exit from the disks hits[0..n), none below best.
+ * Only one exit needs working out in most stops: once the curve has
+ * reached e, a disk it is out of by then was left at or before e (its
+ * exit is the first point out), so it cannot raise the furthest.
+ * The guess picks the disk to start with; the answer never depends
+ * on it.
+ */
+static double
+furthest_exit(const struct coll *C, double t, struct hit *hits, int n,
+    double best)
+{
+	double at = -1, p[2];
+	int first = 0;
+
+	for (int i = 1; i < n; i++)
+		if (hits[i].guess > hits[first].guess)
+			first = i;
+	for (int k = 0; k < n; k++) {
+		const struct hit *h = &hits[k == 0 ? first : k == first ? 0 : k];
+		double e;
+
+		if (best == HUGE_VAL)
+			break;	/* past the tip: none goes further */
+		if (best > t) {
+			if (at != best)
+				curve_eval(&C->cv, at = best, p, NULL);
+			if ((p[0] - h->q[0]) * (p[0] - h->q[0]) + (p[1] -
+			    h->q[1]) * (p[1] - h->q[1]) >= h->S2)
+				continue;
+		}
+		e = curve_exit(&C->cv, t, h->q, h->S2);
+		/* e == t: touching, up to rounding. */
+		if (e > t && e > best)
+			best = e;
+	}
+	return best;
+}
+
+/*
  * If primordium m overlaps the new one of radius r at (x, y, z), on
- * the meridian (c, s) at curve parameter t, raise *best to where the
- * curve leaves it.
+ * the meridian (c, s) at curve parameter t, note the disk it leaves;
+ * when the notes are full, raise *best to where the curve leaves it.
  */
 static inline void
-exit_from(const struct coll *C, int32_t m, double t, double x, double y,
-    double z, double c, double s, double r, double *best)
+exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
+    const double tan[2], double x, double y, double z, double c, double s,
+    double r, struct hit *hits, int *n, double *best)
 {
 	const struct prim *o = &C->pr[m];
 	double dx = x - o->x, dy = y - o->y, dz = z - o->z, R = r + o->r;
-	double qm[2], perp, e;
+	double perp, w[2], wt, disc;
+	struct hit *h;
 
 	if (dx * dx + dy * dy + dz * dz >= R * R)
 		return;
+	if (*n == HITS) {
+		*best = furthest_exit(C, t, hits, *n, *best);
+		*n = 0;
+	}
+	h = &hits[(*n)++];
 	/* In the meridian plane: a disk. */
-	qm[0] = o->x * c + o->y * s;
-	qm[1] = o->z;
+	h->q[0] = o->x * c + o->y * s;
+	h->q[1] = o->z;
 	perp = o->y * c - o->x * s;
-	e = curve_exit(&C->cv, t, qm, R * R - perp * perp);
-	/* e == t: touching, up to rounding. */
-	if (e > t && e > *best)
-		*best = e;
+	h->S2 = R * R - perp * perp;
+	w[0] = pt[0] - h->q[0];
+	w[1] = pt[1] - h->q[1];
+	wt = w[0] * tan[0] + w[1] * tan[1];
+	disc = wt * wt - (w[0] * w[0] + w[1] * w[1] - h->S2);
+	h->guess = -wt + sqrt(disc > 0 ? disc : 0);
 }
 
 /*
@@ -245,16 +305,25 @@ static int
 free_at(const struct coll *C, double t, double c, double s, double r,
     double *to)
 {
-	double p[2], x, y, z, best = -1;
+	double p[2], d[2], x, y, z, best = -1, dl;
 	int32_t lo[3], hi[3];
+	struct hit hits[HITS];
+	int n = 0;
 
-	curve_eval(&C->cv, t, p, NULL);
+	curve_eval(&C->cv, t, p, d);
+	/* The unit tangent, for the guesses. */
+	dl = hypot(d[0], d[1]);
+	if (dl > 0) {
+		d[0] /= dl;
+		d[1] /= dl;
+	}
 	x = p[0] * c;
 	y = p[0] * s;
 	z = p[1];
 	if (box_cells(C, x, y, z, r + C->rmax, lo, hi) > (double)C->n) {
 		for (size_t m = 0; m < C->n; m++)
-			exit_from(C, (int32_t)m, t, x, y, z, c, s, r, &best);
+			exit_from(C, (int32_t)m, t, p, d, x, y, z, c, s, r, hits,
+			    &n, &best);
 	} else
 		for (int32_t i = lo[0]; i <= hi[0]; i++)
 			for (int32_t j = lo[1]; j <= hi[1]; j++)
@@ -263,10 +332,10 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 
 					for (m = slot_find(C, key)->head; m >= 0;
 					    m = C->next[m])
-						exit_from(C, m, t, x, y, z, c, s,
-						    r, &best);
+						exit_from(C, m, t, p, d, x, y, z, c,
+						    s, r, hits, &n, &best);
 				}
-	if (best < 0)
+	if ((best = furthest_exit(C, t, hits, n, best)) < 0)
 		return 1;
 	*to = best;
 	return 0;
