@@ -312,7 +312,7 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 
 	curve_eval(&C->cv, t, p, d);
 	/* The unit tangent, for the guesses. */
-	dl = hypot(d[0], d[1]);
+	dl = sqrt(d[0] * d[0] + d[1] * d[1]);
 	if (dl > 0) {
 		d[0] /= dl;
 		d[1] /= dl;

@@ -372,7 +372,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 {
 	/* Rows as far as the bound can bring a cell under GROW r. */
 	int32_t kq = cover_row(cv, t), span, k0, k1;
-	double rows = ceil(GROW * r / cv->a), rho = hypot(x, y);
+	double rows = ceil(GROW * r / cv->a), rho = sqrt(x * x + y * y);
 	double phi = atan2(y, x);
 	int32_t jphi;
 
@@ -386,6 +386,9 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		double rk = cv->rho_c[k], dz = cv->z_c[k] - z;
 		double reach = GROW * r - cv->d[k] + r;
 		double lim = reach * reach - dz * dz, m = 4 * rk * rho;
+		/* Within this of the middle, the simple bound is under tight. */
+		double near = cv->tight + r - cv->d[k];
+		double near2 = near > 0 ? near * near : 0;
 		int zk = cv->bz[k >> 3];
 		int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, lo, hi;
 		const double *mid = cv->mid[zk];
@@ -423,12 +426,13 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 				if (L <= 0 || D2 >= L * L)
 					continue;
 			}
-			U = sqrt(D2) - r + cv->d[k];
-			if (U >= cv->tight) {
-				double Uf = farthest(cv, k, j, x, y, z, rho) - r;
-
-				U = Uf < U ? Uf : U;
-			}
+			/*
+			 * Near the middle, the middle's distance and the
+			 * cell's size will do; farther out, only the sub-rows'
+			 * farthest points bound it closely enough to matter.
+			 */
+			U = D2 < near2 ? sqrt(D2) - r + cv->d[k] :
+			    farthest(cv, k, j, x, y, z, rho) - r;
 			lower_at(cv, up, U);
 		}
 	}
