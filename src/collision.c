@@ -481,8 +481,7 @@ place_exact(struct coll *C, double t0, double phi, double c, double s,
 			if (!refine(C, k, j, r))
 				cover_passed(&C->cover, j, k);
 		}
-		t = to;
-		k = -1;
+		t = to;		/* k, the row before, is where its row is sought from */
 	}
 	return HUGE_VAL;
 }

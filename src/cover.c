@@ -290,11 +290,10 @@ cover_span(const struct cover *cv, int32_t k, int32_t j, double *phi0,
 	return 2 * M_PI / ncol;
 }
 
-int32_t
-cover_row(const struct cover *cv, double t)
+/* The last row in [lo, hi] that starts at or before t, else lo. */
+static int32_t
+row_within(const struct cover *cv, double t, int32_t lo, int32_t hi)
 {
-	int32_t lo = 0, hi = cv->rows - 1;
-
 	while (lo < hi) {
 		int32_t mid = (lo + hi + 1) / 2;
 
@@ -304,6 +303,30 @@ cover_row(const struct cover *cv, double t)
 			hi = mid - 1;
 	}
 	return lo;
+}
+
+int32_t
+cover_row(const struct cover *cv, double t)
+{
+	return row_within(cv, t, 0, cv->rows - 1);
+}
+
+/*
+ * The row holding t, at or past row k, which starts at or before t: a
+ * walk moves up a few rows a stop, so strides doubling from k find it
+ * in a few steps where a search of every row takes a dozen or more.
+ */
+static int32_t
+row_from(const struct cover *cv, double t, int32_t k)
+{
+	int32_t step = 1;
+
+	while (k + step < cv->rows && cv->t_row[k + step] <= t) {
+		k += step;
+		step *= 2;
+	}
+	return row_within(cv, t, k, k + step < cv->rows ? k + step - 1 :
+	    cv->rows - 1);
 }
 
 static inline void
@@ -499,9 +522,10 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	}
 	if (cv->f[j] * cv->q >= r)
 		column_reset(cv, j);
-	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t) ||
-	    (k + 1 < cv->rows && !(*t < cv->t_row[k + 1])))
+	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t))
 		k = cover_row(cv, *t);
+	else if (k + 1 < cv->rows && !(*t < cv->t_row[k + 1]))
+		k = row_from(cv, *t, k);
 	*row = k;
 	h = cv->head[j];
 	if (k < h) {
