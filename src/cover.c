@@ -330,10 +330,10 @@ row_from(const struct cover *cv, double t, int32_t k)
 }
 
 static inline void
-lower_at(const struct cover *cv, uint8_t *u, double U)
+lower_at(uint8_t *u, double inv_q, double U)
 {
 	/* Rounded up, and a step more: a bound must never shrink. */
-	double steps = U * cv->inv_q + 2;
+	double steps = U * inv_q + 2;
 
 	if (steps < *u)
 		*u = steps > 0 ? (uint8_t)steps : 0;
@@ -342,7 +342,7 @@ lower_at(const struct cover *cv, uint8_t *u, double U)
 void
 cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 {
-	lower_at(cv, cell(cv, k, j), U);
+	lower_at(cell(cv, k, j), cv->inv_q, U);
 }
 
 /*
@@ -415,6 +415,15 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		int zk = cv->bz[k >> 3];
 		int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, lo, hi;
 		const double *mid = cv->mid[zk];
+		/*
+		 * The row's own: read once here, as the cells' writes below
+		 * (bytes, which may alias anything) would have them read
+		 * again each cell.  Its cells, as cell_z() finds them.
+		 */
+		double dk = cv->d[k], hk = cv->h[k], q = cv->q, inv_q = cv->inv_q;
+		double reach2 = reach * reach;
+		uint8_t *tiles = &cv->u[cv->bbase[k >> 3] * 64 + (size_t)(k & 7)];
+		size_t stride = (size_t)cv->bstride[k >> 3] * 64;
 
 		if (lim <= 0)
 			continue;
@@ -436,15 +445,18 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			dx = rk * mid[2 * j] - x;
 			dy = rk * mid[2 * j + 1] - y;
 			D2 = dx * dx + dy * dy + dz * dz;
-			if (D2 >= reach * reach)
+			if (D2 >= reach2)
 				continue;
 			/*
-			 * No square root where the bound would not drop: the
-			 * farthest point is at least as far as the middle.
+			 * No square root where the bound would drop by less
+			 * than h at most (both bounds are at least the
+			 * middle's distance less r): taking those too
+			 * changed no walk's stops, measured.
 			 */
-			up = cell_z(cv, k, j);
+			up = tiles + (size_t)(j >> 3) * stride + (size_t)((j & 7) <<
+			    3);
 			if ((u = *up) != U_NONE) {
-				double L = (u - 2) * cv->q + r - cv->h[k];
+				double L = (u - 2) * q + r - hk;
 
 				if (L <= 0 || D2 >= L * L)
 					continue;
@@ -454,9 +466,9 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			 * cell's size will do; farther out, only the sub-rows'
 			 * farthest points bound it closely enough to matter.
 			 */
-			U = D2 < near2 ? sqrt(D2) - r + cv->d[k] :
+			U = D2 < near2 ? sqrt(D2) - r + dk :
 			    farthest(cv, k, j, x, y, z, rho) - r;
-			lower_at(cv, up, U);
+			lower_at(up, inv_q, U);
 		}
 	}
 }
