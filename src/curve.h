@@ -27,6 +27,10 @@ struct piece {
 struct curve {
 	struct piece	*pc;
 	size_t		 npc;
+	double		*t0;		/* npc + 1: each piece's start in t,
+					   then the tip's, side by side */
+	size_t		*first;		/* per segment, and past the last:
+					   the index of its first piece */
 	double		 tmax;		/* the number of segments */
 	double		 length;	/* arc length, base to tip */
 	double		 area;		/* of the surface it sweeps */
