@@ -214,8 +214,8 @@ box_cells(const struct coll *C, double x, double y, double z, double q,
 /*
  * The earlier primordia that overlap the new one at a walk's stop, in
  * the meridian plane: each a disk of squared radius S2 about q, and
- * where the curve would leave it if it went on along its tangent (not
- * exact: only which exit to work out first).
+ * how far along the tangent the curve would leave it (not exact: only
+ * which exit to work out first).
  */
 struct hit {
 	double	 q[2], S2, guess;
@@ -232,15 +232,27 @@ struct hit {
  * on it.
  */
 static double
-furthest_exit(const struct coll *C, double t, struct hit *hits, int n,
-    double best)
+furthest_exit(const struct coll *C, double t, const double pt[2],
+    const double tan[2], struct hit *hits, int n, double best)
 {
-	double at = -1, p[2];
+	double at = -1, p[2], tt = tan[0] * tan[0] + tan[1] * tan[1];
 	int first = 0;
 
-	for (int i = 1; i < n; i++)
-		if (hits[i].guess > hits[first].guess)
+	/*
+	 * Along the tangent (of any length: only the order counts), the
+	 * point leaves disk i at pt + g tan, g the larger root of
+	 * |pt + g tan - q|^2 = S2.
+	 */
+	for (int i = 0; i < n && n > 1; i++) {
+		struct hit *h = &hits[i];
+		double w[2] = { pt[0] - h->q[0], pt[1] - h->q[1] };
+		double wt = w[0] * tan[0] + w[1] * tan[1];
+		double disc = wt * wt - tt * (w[0] * w[0] + w[1] * w[1] - h->S2);
+
+		h->guess = -wt + sqrt(disc > 0 ? disc : 0);
+		if (h->guess > hits[first].guess)
 			first = i;
+	}
 	for (int k = 0; k < n; k++) {
 		const struct hit *h = &hits[k == 0 ? first : k == first ? 0 : k];
 		double e;
@@ -274,13 +286,13 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
 {
 	const struct prim *o = &C->pr[m];
 	double dx = x - o->x, dy = y - o->y, dz = z - o->z, R = r + o->r;
-	double perp, w[2], wt, disc;
+	double perp;
 	struct hit *h;
 
 	if (dx * dx + dy * dy + dz * dz >= R * R)
 		return;
 	if (*n == HITS) {
-		*best = furthest_exit(C, t, hits, *n, *best);
+		*best = furthest_exit(C, t, pt, tan, hits, *n, *best);
 		*n = 0;
 	}
 	h = &hits[(*n)++];
@@ -289,11 +301,6 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
 	h->q[1] = o->z;
 	perp = o->y * c - o->x * s;
 	h->S2 = R * R - perp * perp;
-	w[0] = pt[0] - h->q[0];
-	w[1] = pt[1] - h->q[1];
-	wt = w[0] * tan[0] + w[1] * tan[1];
-	disc = wt * wt - (w[0] * w[0] + w[1] * w[1] - h->S2);
-	h->guess = -wt + sqrt(disc > 0 ? disc : 0);
 }
 
 /*
@@ -305,18 +312,12 @@ static int
 free_at(const struct coll *C, double t, double c, double s, double r,
     double *to)
 {
-	double p[2], d[2], x, y, z, best = -1, dl;
+	double p[2], d[2], x, y, z, best = -1;
 	int32_t lo[3], hi[3];
 	struct hit hits[HITS];
 	int n = 0;
 
-	curve_eval(&C->cv, t, p, d);
-	/* The unit tangent, for the guesses. */
-	dl = sqrt(d[0] * d[0] + d[1] * d[1]);
-	if (dl > 0) {
-		d[0] /= dl;
-		d[1] /= dl;
-	}
+	curve_eval(&C->cv, t, p, d);	/* d: the tangent, for the guesses */
 	x = p[0] * c;
 	y = p[0] * s;
 	z = p[1];
@@ -335,7 +336,7 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 						exit_from(C, m, t, p, d, x, y, z, c,
 						    s, r, hits, &n, &best);
 				}
-	if ((best = furthest_exit(C, t, hits, n, best)) < 0)
+	if ((best = furthest_exit(C, t, p, d, hits, n, best)) < 0)
 		return 1;
 	*to = best;
 	return 0;
