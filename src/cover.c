@@ -427,9 +427,13 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 
 		if (lim <= 0)
 			continue;
-		/* |P - Q|^2 >= 4 rk rho sin^2(dphi / 2) + dz^2. */
+		/*
+		 * |P - Q|^2 >= 4 rk rho sin^2(dphi / 2) + dz^2, and the
+		 * middle of column jc + dj is at least |dj| - 1/2 columns
+		 * from the primordium's angle.
+		 */
 		w = m > lim ? (int32_t)ceil(asin(sqrt(lim / m)) / M_PI *
-		    ncol) + 1 : ncol;
+		    ncol + 0.5) : ncol;
 		lo = -w;
 		hi = w;
 		if (2 * w + 1 >= ncol) {	/* the whole ring, once */
