@@ -95,7 +95,7 @@ struct coll {
 	struct prim	*pr;
 	size_t		 n, cap;
 	double		 rmax;		/* largest radius placed */
-	double		 g;		/* grid cell size */
+	double		 g, inv_g;	/* grid cell size, its inverse */
 	struct slot	*slot;
 	uint32_t	 mask;
 	size_t		 used;
@@ -138,9 +138,13 @@ cell1(double v)
 static void
 cell_of(const struct coll *C, double x, double y, double z, int32_t k[3])
 {
-	k[0] = cell1(x / C->g);
-	k[1] = cell1(y / C->g);
-	k[2] = cell1(z / C->g);
+	/*
+	 * A product, not a division: monotone all the same, so a box's
+	 * cells still hold every point inside it.
+	 */
+	k[0] = cell1(x * C->inv_g);
+	k[1] = cell1(y * C->inv_g);
+	k[2] = cell1(z * C->inv_g);
 }
 
 /* Put primordium i in its cell's list; 1 if that took a new slot. */
@@ -709,6 +713,7 @@ grid_fit(struct coll *C, double r)
 	if (C->slot != NULL && g <= 2 * C->g && g >= C->g / 2)
 		return;
 	C->g = g;
+	C->inv_g = 1 / g;
 	grid_build(C, 2 * C->used);
 }
 
