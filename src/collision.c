@@ -388,9 +388,15 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 					double dx = mx - o->x, dy = my - o->y,
 					    dz = mz - o->z;
 					double d2 = dx * dx + dy * dy + dz * dz;
+					double qo = cv->d[k] + r + o->r;
 					int32_t i = nn;
 
-					if (d2 >= q * q)
+					/*
+					 * Farther than this, it leaves every point
+					 * of the cell clear by r or more: it could
+					 * only be the least where the cell fails.
+					 */
+					if (d2 >= qo * qo)
 						continue;
 					if (nn == 64)
 						return 0; /* not worth it */
