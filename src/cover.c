@@ -414,6 +414,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		double near2 = near > 0 ? near * near : 0;
 		int zk = cv->bz[k >> 3];
 		int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, lo, hi;
+		double wf;
 		const double *mid = cv->mid[zk];
 		/*
 		 * The row's own: read once here, as the cells' writes below
@@ -430,10 +431,13 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		/*
 		 * |P - Q|^2 >= 4 rk rho sin^2(dphi / 2) + dz^2, and the
 		 * middle of column jc + dj is at least |dj| - 1/2 columns
-		 * from the primordium's angle.
+		 * from the primordium's angle: out of reach past dphi/2 =
+		 * asin(x), x^2 = lim / m, which is at most x / sqrt(1 -
+		 * x^2) (its tangent), close for the small x of most rows
+		 * and without asin().
 		 */
-		w = m > lim ? (int32_t)ceil(asin(sqrt(lim / m)) / M_PI *
-		    ncol + 0.5) : ncol;
+		wf = m > lim ? sqrt(lim / (m - lim)) / M_PI * ncol + 0.5 : ncol;
+		w = wf < ncol ? (int32_t)ceil(wf) : ncol;
 		lo = -w;
 		hi = w;
 		if (2 * w + 1 >= ncol) {	/* the whole ring, once */
