@@ -105,16 +105,55 @@ static void
 row(const char *what, double t, size_t n, double bytes)
 {
 	if (t < 0)
-		printf("  %-34s over %d s (or failed)\n", what, LIMIT);
+		printf("  %-44s over %d s (or failed)\n", what, LIMIT);
 	else
-		printf("  %-34s %8zu in %6.2f s = %5.2f us each, %4.0f bytes "
+		printf("  %-44s %8zu in %6.2f s = %5.2f us each, %4.0f bytes "
 		    "each\n", what, n, t, t / (double)n * 1e6, bytes);
 	fflush(stdout);
 }
 
+/*
+ * The cases a new user met first (the hemisphere is the dome of the
+ * benchmark): each should take at most its target a primordium.
+ */
+static const struct {
+	const char	*name;
+	const char	*shape;
+	const char	*radius;	/* %g: r */
+	double		 r;
+	long long	 count;		/* 0: the default bound */
+	double		 target;	/* microseconds a primordium */
+} cases[] = {
+	{ "full dome, r = 0.0012", "hemisphere", "%g", 0.0012, 2000000, 2.5 },
+	{ "hemisphere r = 3e-4, 100,000", "hemisphere", "%g", 3e-4, 100000,
+	  4 },
+	{ "hemisphere r = 3e-4, 300,000", "hemisphere", "%g", 3e-4, 300000,
+	  4 },
+	{ "hemisphere r = 0.0015, 200,000", "hemisphere", "%g", 0.0015,
+	  200000, 4 },
+	{ "hemisphere r 0.003 -> 0.0005, 200,000", "hemisphere",
+	  "%g * (1 - 0.8333333 * t)", 0.003, 200000, 4 },
+	{ "disk r = 1e-3, to the centre", "disk", "%g", 1e-3, 5000000, 4 },
+	{ "hemisphere r = 3e-4, default bound", "hemisphere", "%g", 3e-4, 0,
+	  4 },
+	{ "sphere r = 1e-4, default bound", "sphere", "%g", 1e-4, 0, 4 },
+};
+
 int
 main(void)
 {
+	printf("the first cases met (target a primordium in brackets):\n");
+	for (size_t i = 0; i < sizeof(cases) / sizeof(*cases); i++) {
+		double t, b;
+		size_t n;
+		char what[96];
+
+		t = timed(cases[i].shape, cases[i].radius, NULL, cases[i].r,
+		    cases[i].count, &n, &b);
+		snprintf(what, sizeof(what), "%s (%.1f)", cases[i].name,
+		    cases[i].target);
+		row(what, t, n, b);
+	}
 	signal(SIGPIPE, SIG_IGN);
 	for (size_t i = 0; i < sizeof(receptacles) / sizeof(*receptacles);
 	    i++)
@@ -132,7 +171,7 @@ main(void)
 			    &n3, &b3);
 			row("a band at the base, 300,000", t3, n3, b3);
 			if (t1 > 0 && t3 > 0)
-				printf("  %-34s %.1f (3 when the cost per "
+				printf("  %-44s %.1f (3 when the cost per "
 				    "primordium holds)\n", "time(300,000) / "
 				    "time(100,000):", t3 / t1);
 			/*
