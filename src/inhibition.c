@@ -141,6 +141,7 @@ struct field {
 	double		 floor;		/* the near ones' least pulls, */
 	double		*fl;		/* each, indexed as r */
 	struct cutp	*cp;		/* the cuts in order, twice round */
+	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
 };
 
 /* Moments (j, m), m <= j, m = j mod 2, in order of j: where j's start. */
@@ -576,6 +577,48 @@ check_bounds(struct field *F, const struct cut *cuts, size_t k)
 }
 
 /*
+ * The circle's cuts, the k newest primordia's angles, in order (newest
+ * first among equal angles, as a stable sort of them newest first).
+ * From one step to the next the newest joins and, with k the same, the
+ * oldest leaves: one removal and one insertion keep the order, where a
+ * sort of them all took 8% of the time.  Otherwise they are sorted
+ * afresh.
+ */
+static void
+cuts_update(struct field *F, struct cut *cuts, size_t k)
+{
+	size_t n = F->n, p, lo = 0, hi;
+	struct cut nw;
+
+	if (!(F->ncut == k && F->cut_n + 1 == n && k > 0 && n > k)) {
+		for (size_t i = 0; i < k; i++) {
+			cuts[i].i = n - 1 - i;
+			cuts[i].th = remainder(F->phi[cuts[i].i], 2 * M_PI);
+		}
+		qsort(cuts, k, sizeof(*cuts), cutcmp);
+		F->ncut = k;
+		F->cut_n = n;
+		return;
+	}
+	for (p = 0; cuts[p].i != n - 1 - k; p++)
+		;
+	memmove(cuts + p, cuts + p + 1, (k - 1 - p) * sizeof(*cuts));
+	nw.i = n - 1;
+	nw.th = remainder(F->phi[n - 1], 2 * M_PI);
+	for (hi = k - 1; lo < hi; ) {	/* the first at or past nw.th */
+		size_t mid = (lo + hi) / 2;
+
+		if (cuts[mid].th < nw.th)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	memmove(cuts + lo + 1, cuts + lo, (k - 1 - lo) * sizeof(*cuts));
+	cuts[lo] = nw;
+	F->cut_n = n;
+}
+
+/*
  * A binary heap of gaps by their bounds lb[], least first and, among
  * equal bounds, the first gap first: heap[0] holds the count, the gaps
  * start at heap[1].
@@ -634,11 +677,7 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 	double th = 0, emin = HUGE_VAL;
 
 	heap[0] = 0;
-	for (size_t i = 0; i < k; i++) {
-		cuts[i].i = F->n - 1 - i;
-		cuts[i].th = remainder(F->phi[cuts[i].i], 2 * M_PI);
-	}
-	qsort(cuts, k, sizeof(*cuts), cutcmp);
+	cuts_update(F, cuts, k);
 	/* Opposite each primordium its pull is least: the floor of E. */
 	F->floor = 0;
 	for (size_t i = F->from; i < F->n; i++) {
