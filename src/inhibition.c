@@ -198,7 +198,7 @@ far_summary(struct field *F)
 	F->far_slope = F->far_curv = 0;
 	F->far_least = F->Fc[0];
 	for (int m = 1; m <= F->nmodes; m++) {
-		double a = hypot(F->Fc[m], F->Fs[m]);
+		double a = sqrt(F->Fc[m] * F->Fc[m] + F->Fs[m] * F->Fs[m]);
 
 		F->far_slope += m * a;
 		F->far_curv += (double)m * m * a;
