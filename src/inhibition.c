@@ -142,6 +142,8 @@ struct field {
 	double		*fl;		/* each, indexed as r */
 	struct cutp	*cp;		/* the cuts in order, twice round */
 	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
+	double		 shrink[MODES + 1];	/* e^-(s + j) g per j, */
+	double		 shrink_g;	/* for this g */
 };
 
 /* Moments (j, m), m <= j, m = j mod 2, in order of j: where j's start. */
@@ -216,8 +218,13 @@ far_step(struct field *F, double g)
 {
 	size_t n = F->n;
 
+	if (g != F->shrink_g) {	/* the growth mostly stays: once */
+		for (int j = 0; j <= MODES; j++)
+			F->shrink[j] = exp(-(2 * F->hs + j) * g);
+		F->shrink_g = g;
+	}
 	for (int j = 0; j <= MODES; j++) {
-		double f = exp(-(2 * F->hs + j) * g);
+		double f = F->shrink[j];
 
 		for (size_t k = jm(j); k < jm(j + 1); k++) {
 			F->Mc[k] *= f;
