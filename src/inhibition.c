@@ -480,12 +480,15 @@ above_floor(const struct field *F, size_t i, const struct part *p)
 /*
  * Per tier: how many cuts nearest the gap, 0 for all; in how many parts
  * (chosen by measurement: most gaps go at the first, most of the rest
- * at the second and third).
+ * at the second and third); and of those cuts, how many nearest are
+ * taken part by part (0: all), the others once over the whole gap: far
+ * from the gap a pull hardly changes across it.
  */
 static const struct {
 	size_t		 cuts;
 	int		 parts;
-} tiers[TIERS] = { { 6, 1 }, { 12, 4 }, { 32, 4 }, { 0, 8 } };
+	size_t		 fine;
+} tiers[TIERS] = { { 6, 1, 0 }, { 12, 4, 0 }, { 32, 4, 0 }, { 0, 8, 32 } };
 
 /*
  * A lower bound of E in gap g, [a, b]: every pull is positive and
@@ -503,14 +506,31 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
     size_t g, double a, double b, int tier, double *at)
 {
 	int parts = tiers[tier].parts;
-	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k;
+	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k, fine, skip;
 	double h = (b - a) / parts, least = HUGE_VAL, far = 0, ch = 1, sh = 0;
+	double coarse = 0;
 	struct part pt;
 	size_t first;
 
 	if (nc > k)
 		nc = k;
 	first = (g + k + 1 - nc / 2) % k;
+	fine = tiers[tier].fine && tiers[tier].fine < nc && b - a < M_PI ?
+	    tiers[tier].fine : nc;
+	skip = nc / 2 - fine / 2;	/* where the fine ones start */
+	if (fine < nc) {
+		/* The others, and the near ones that are not cuts, once. */
+		struct part whole = { a, b, F->cp[g].c, F->cp[g].s,
+		    F->cp[g + 1].c, F->cp[g + 1].s };
+
+		for (size_t d = 0; d < nc; d++)
+			if (d < skip || d >= skip + fine)
+				coarse += cut_above(F, &F->cp[first + d],
+				    &whole);
+		if (tiers[tier].cuts == 0)
+			for (size_t i = F->from; i + k < F->n; i++)
+				coarse += above_floor(F, i, &whole);
+	}
 	if (F->moments && tier >= 2) {
 		/* Smooth beside the near ones: Taylor's, over the whole gap. */
 		double e[3] = { 0, 0, 0 };
@@ -529,7 +549,7 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		sh = sin(h);
 	}
 	for (int p = 0; p < parts; p++) {
-		double lo = a + p * h, sum = F->floor;
+		double lo = a + p * h, sum = F->floor + coarse;
 
 		pt.hi = p + 1 < parts ? lo + h : b;
 		if (p + 1 < parts) {
@@ -541,14 +561,14 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		}
 		/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
 		if (pt.hi - pt.lo < M_PI)
-			for (size_t d = 0; d < nc; d++)
+			for (size_t d = skip; d < skip + fine; d++)
 				sum += cut_above(F, &F->cp[first + d], &pt);
 		else
 			for (size_t d = 0; d < nc; d++)
 				sum += above_floor(F, cuts[(first + d) % k].i,
 				    &pt);
 		/* And the near ones that are not cuts. */
-		if (tiers[tier].cuts == 0)
+		if (tiers[tier].cuts == 0 && fine == nc)
 			for (size_t i = F->from; i + k < F->n; i++)
 				sum += above_floor(F, i, &pt);
 		if (sum + far < least) {
