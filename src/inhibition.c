@@ -488,7 +488,7 @@ static const struct {
 	size_t		 cuts;
 	int		 parts;
 	size_t		 fine;
-} tiers[TIERS] = { { 6, 1, 0 }, { 12, 4, 0 }, { 32, 4, 0 }, { 0, 8, 32 } };
+} tiers[TIERS] = { { 6, 1, 0 }, { 16, 4, 6 }, { 48, 4, 12 }, { 0, 16, 16 } };
 
 /*
  * A lower bound of E in gap g, [a, b]: every pull is positive and
