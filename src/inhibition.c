@@ -666,10 +666,11 @@ heap_push(size_t *heap, size_t g, const double *lb)
 	heap[i] = g;
 }
 
-static size_t
-heap_pop(size_t *heap, const double *lb)
+/* Put gap g at slot i, or below it, as the gaps under i's place require. */
+static void
+heap_down(size_t *heap, size_t i, size_t g, const double *lb)
 {
-	size_t top = heap[1], last = heap[heap[0]--], n = heap[0], i = 1;
+	size_t n = heap[0];
 
 	for (;;) {
 		size_t c = 2 * i;
@@ -678,13 +679,33 @@ heap_pop(size_t *heap, const double *lb)
 			break;
 		if (c + 1 <= n && heap_less(lb, heap[c + 1], heap[c]))
 			c++;
-		if (!heap_less(lb, heap[c], last))
+		if (!heap_less(lb, heap[c], g))
 			break;
 		heap[i] = heap[c];
 		i = c;
 	}
-	heap[i] = last;
+	heap[i] = g;
+}
+
+static size_t
+heap_pop(size_t *heap, const double *lb)
+{
+	size_t top = heap[1], last = heap[heap[0]--];
+
+	if (heap[0] > 0)
+		heap_down(heap, 1, last, lb);
 	return top;
+}
+
+/* The k gaps at once, bottom up: O(k), not k pushes. */
+static void
+heap_make(size_t *heap, size_t k, const double *lb)
+{
+	heap[0] = k;
+	for (size_t g = 0; g < k; g++)
+		heap[g + 1] = g;
+	for (size_t i = k / 2; i >= 1; i--)
+		heap_down(heap, i, heap[i], lb);
 }
 
 /*
@@ -728,8 +749,7 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 		lb[g] = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
 		    &at[g]) : HUGE_VAL;	/* no room */
 	}
-	for (size_t g = 0; g < k; g++)
-		heap_push(heap, g, lb);
+	heap_make(heap, k, lb);
 	/* The gap of least bound next, while it is below the least E. */
 	while (heap[0] > 0 && lb[heap[1]] < emin) {
 		size_t g = heap_pop(heap, lb);
