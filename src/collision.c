@@ -36,6 +36,7 @@
 #define CHECK_EVERY	31	/* cells the tests' check of the map takes */
 #define LAW_SAMPLES	4096	/* of the radius law, to size the maps */
 #define CELLS_PER_ORGAN	64	/* of the cover map, at most */
+#define REFINE_FALL	0.03	/* of r: a proof for r lasts about so far */
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
 				   walk's steps vanish in double precision */
 
@@ -102,6 +103,9 @@ struct coll {
 	int32_t		*next;		/* per primordium: next in its cell */
 	struct cover	 cover;
 	int		 nocover;	/* walk without the cover map */
+	double		*law;		/* the radius law sampled, or NULL */
+	long long	 law_step;	/* every law_step primordia */
+	size_t		 nlaw;
 };
 
 static inline uint32_t
@@ -473,10 +477,28 @@ near_point(void *ctx, const double p[3], double U)
 	return 0;
 }
 
+/*
+ * Is proving a cell covered worth it?  refine() proves it for radii
+ * down to a bound a little under r.  If the law falls further than
+ * that, by REFINE_FALL, before the walks come round to the cell again
+ * (period primordia on), no walk uses the proof: on the falling
+ * hemisphere refine() cost more than it saved.
+ */
+static int
+refine_pays(const struct coll *C, long long n, long long period, double r)
+{
+	size_t i;
+
+	if (C->law == NULL)
+		return 1;
+	i = (size_t)((n + period) / C->law_step);
+	return C->law[i < C->nlaw ? i : C->nlaw - 1] >= (1 - REFINE_FALL) * r;
+}
+
 /* The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none. */
 static double
-place_exact(struct coll *C, double t0, double phi, double c, double s,
-    double r)
+place_exact(struct coll *C, long long n, double t0, double phi, double c,
+    double s, double r)
 {
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
 	double t = t0, to;
@@ -489,7 +511,8 @@ place_exact(struct coll *C, double t0, double phi, double c, double s,
 		/* Blocked across a cell that holds up the column's prefix. */
 		if (!C->nocover && k == C->cover.head[j] &&
 		    to >= C->cover.t_row[k + 1]) {
-			if (!refine(C, k, j, r))
+			if (!refine_pays(C, n, C->cover.cols >> C->cover.bz[k >>
+			    3], r) || !refine(C, k, j, r))
 				cover_passed(&C->cover, j, k);
 		}
 		t = to;		/* k, the row before, is where its row is sought from */
@@ -677,7 +700,7 @@ fill_result(const struct coll *C, double alpha, struct result *res)
  * cannot give is left out here and reported when placement gets there.
  */
 static void
-law_extent(const struct coll *C, long long N, double r0, double *rmin,
+law_extent(struct coll *C, long long N, double r0, double *rmin,
     double *area)
 {
 	struct expr_env env = { { 0 }, (uint64_t)C->sc->seed, 0 };
@@ -689,14 +712,19 @@ law_extent(const struct coll *C, long long N, double r0, double *rmin,
 		*area = 2 * sqrt(3) * r0 * r0 * (double)N;
 		return;
 	}
+	C->law_step = step;
+	C->nlaw = (size_t)((N + step - 1) / step);
+	C->law = xcalloc(C->nlaw, sizeof(*C->law));
 	for (long long n = 0; n < N; n += step) {
 		env.n = n;
 		env.var[V_N] = (double)n;
 		env.var[V_COUNT] = (double)N;
 		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
+		C->law[n / step] = HUGE_VAL;
 		if (expr_eval(C->p->radius.e, &env, &r) != EXPR_OK ||
 		    !(r > 0))
 			continue;
+		C->law[n / step] = r;
 		*rmin = fmin(*rmin, r);
 		sum += r * r;
 		samples++;
@@ -804,7 +832,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
 		grid_fit(&C, r);
 		t = brute ? place_brute(&C, t0, c, s, r) :
-		    place_exact(&C, t0, a, c, s, r);
+		    place_exact(&C, n, t0, a, c, s, r);
 		if (t > C.cv.tmax)
 			break;
 		coll_add(&C, t, c, s, r);
@@ -830,6 +858,7 @@ out:
 	curve_free(&C.cv);
 	free(C.pr);
 	free(C.next);
+	free(C.law);
 	free(C.slot);
 	return rc;
 }
