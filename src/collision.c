@@ -251,7 +251,7 @@ furthest_exit(const struct coll *C, double t, const double pt[2],
 	 * point leaves disk i at pt + g tan, g the larger root of
 	 * |pt + g tan - q|^2 = S2.
 	 */
-	for (int i = 0; i < n && n > 1; i++) {
+	for (int i = 0; i < (n > 1 ? n : 0); i++) {	/* one: no order */
 		struct hit *h = &hits[i];
 		double w[2] = { pt[0] - h->q[0], pt[1] - h->q[1] };
 		double wt = w[0] * tan[0] + w[1] * tan[1];
@@ -720,10 +720,12 @@ law_extent(struct coll *C, long long N, double r0, double *rmin,
 		env.var[V_N] = (double)n;
 		env.var[V_COUNT] = (double)N;
 		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
-		C->law[n / step] = HUGE_VAL;
+		/* A radius the law cannot give: no fall to plan for. */
 		if (expr_eval(C->p->radius.e, &env, &r) != EXPR_OK ||
-		    !(r > 0))
+		    !(r > 0)) {
+			C->law[n / step] = HUGE_VAL;
 			continue;
+		}
 		C->law[n / step] = r;
 		*rmin = fmin(*rmin, r);
 		sum += r * r;

@@ -724,7 +724,6 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 	size_t k = F->near < F->n ? F->near : F->n;
 	double th = 0, emin = HUGE_VAL;
 
-	heap[0] = 0;
 	cuts_update(F, cuts, k);
 	/* Opposite each primordium its pull is least: the floor of E. */
 	F->floor = 0;

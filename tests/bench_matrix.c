@@ -142,6 +142,7 @@ static const struct {
 int
 main(void)
 {
+	signal(SIGPIPE, SIG_IGN);
 	printf("the first cases met (target a primordium in brackets):\n");
 	for (size_t i = 0; i < sizeof(cases) / sizeof(*cases); i++) {
 		double t, b;
@@ -154,7 +155,6 @@ main(void)
 		    cases[i].target);
 		row(what, t, n, b);
 	}
-	signal(SIGPIPE, SIG_IGN);
 	for (size_t i = 0; i < sizeof(receptacles) / sizeof(*receptacles);
 	    i++)
 		for (size_t j = 0; j < sizeof(laws) / sizeof(*laws); j++) {
