@@ -112,6 +112,12 @@ struct cutp {
  * e^-(s+j)G.  Each primordium joins the moments once and costs nothing
  * after: near ones are summed one by one, the rest in O(MODES^2) a
  * primordium however many came before.
+ *
+ * The moments are kept in units that do not move: each as it was at the
+ * step whose S is base (times its weight), so a plastochron changes
+ * nothing stored, and the modes take the growth since base as a factor
+ * per j.  The units are reset (base moved up) before those factors could
+ * leave a double's range.
  */
 struct field {
 	const struct inhibition *P;
@@ -126,9 +132,11 @@ struct field {
 	int		 moments;	/* 0: every one by one (all pairs) */
 	double		 far_r;		/* the radius where they join them */
 	double		 hs;		/* s / 2 */
-	double		*w;		/* per (j, m): the weight of moment
+	double		*w;		/* per (m, j): the weight of moment
 					   (j, m) in mode m */
-	double		*Mc, *Ms;	/* the moments, per (j, m) */
+	double		*Mc, *Ms;	/* the weighted moments at base */
+	double		 base;		/* their units' S */
+	size_t		 row[MODES + 2];	/* where m's moments start */
 	double		 Fc[MODES + 1], Fs[MODES + 1];	/* the modes */
 	int		 nmodes;	/* of the far field: MODES or GMODES */
 	double		*gt;		/* Gaussian: per primordium cos and
@@ -142,18 +150,14 @@ struct field {
 	double		*fl;		/* each, indexed as r */
 	struct cutp	*cp;		/* the cuts in order, twice round */
 	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
-	double		 shrink[MODES + 1];	/* e^-(s + j) g per j, */
-	double		 shrink_g;	/* for this g */
 };
 
-/* Moments (j, m), m <= j, m = j mod 2, in order of j: where j's start. */
-static size_t
-jm(int j)
-{
-	return (size_t)(j / 2 + 1) * (size_t)(j - j / 2);
-}
-
-#define NMOMENTS	jm(MODES + 1)
+/*
+ * The largest growth factor of a moment's units, e^REBASE, before they
+ * are reset: the products with the factors e^-(s+j)(S - base) stay far
+ * inside a double's range.
+ */
+#define REBASE		600
 
 /*
  * The weights, and the far radius: the smallest at which the series
@@ -165,15 +169,19 @@ far_init(struct field *F)
 {
 	double lam = F->hs, a[MODES + 1], lo = 0, hi = 1;
 
+	/* Moment (j, m), m <= j, m = j mod 2, at row[m] + (j - m) / 2. */
+	F->row[0] = 0;
+	for (int m = 0; m <= MODES; m++)
+		F->row[m + 1] = F->row[m] + (size_t)(MODES - m) / 2 + 1;
 	a[0] = 1;	/* (lam)_i / i! */
 	for (int i = 1; i <= MODES; i++)
 		a[i] = a[i - 1] * (lam + i - 1) / i;
-	F->w = xcalloc(NMOMENTS, sizeof(*F->w));
+	F->w = xcalloc(F->row[MODES + 1], sizeof(*F->w));
 	for (int j = 0; j <= MODES; j++)
 		for (int i = 0; i <= j; i++) {
 			int m = abs(j - 2 * i);
 
-			F->w[jm(j) + (size_t)(m / 2)] += a[i] * a[j - i];
+			F->w[F->row[m] + (size_t)(j - m) / 2] += a[i] * a[j - i];
 		}
 	for (int it = 0; it < 60; it++) {
 		double x = (lo + hi) / 2, t = 1, tail = 0, s = 2 * lam;
@@ -189,8 +197,19 @@ far_init(struct field *F)
 			hi = x;
 	}
 	F->far_r = R0 / lo;
-	F->Mc = xcalloc(NMOMENTS, sizeof(*F->Mc));
-	F->Ms = xcalloc(NMOMENTS, sizeof(*F->Ms));
+	F->Mc = xcalloc(F->row[MODES + 1], sizeof(*F->Mc));
+	F->Ms = xcalloc(F->row[MODES + 1], sizeof(*F->Ms));
+}
+
+/* f[j] = e^-(s+j)t, j <= MODES: a moment's factor for growth t. */
+static void
+far_factors(const struct field *F, double t, double f[MODES + 1])
+{
+	double x = exp(-t);
+
+	f[0] = exp(-2 * F->hs * t);
+	for (int j = 1; j <= MODES; j++)
+		f[j] = f[j - 1] * x;
 }
 
 /* What bounds the far field: its slope, its curvature, its least. */
@@ -210,56 +229,67 @@ far_summary(struct field *F)
 }
 
 /*
- * The moments after a plastochron of growth g, with the primordia it
- * took beyond far_r; then the modes, and what bounds them.
+ * The modes now, S[n]: with the primordia that have moved beyond far_r
+ * joining the moments.
  */
 static void
-far_step(struct field *F, double g)
+far_step(struct field *F)
 {
 	size_t n = F->n;
+	double f[MODES + 1], t = F->S[n] - F->base;
 
-	if (g != F->shrink_g) {	/* the growth mostly stays: once */
-		for (int j = 0; j <= MODES; j++)
-			F->shrink[j] = exp(-(2 * F->hs + j) * g);
-		F->shrink_g = g;
-	}
-	for (int j = 0; j <= MODES; j++) {
-		double f = F->shrink[j];
-
-		for (size_t k = jm(j); k < jm(j + 1); k++) {
-			F->Mc[k] *= f;
-			F->Ms[k] *= f;
-		}
+	if ((2 * F->hs + MODES) * t > REBASE) {
+		far_factors(F, t, f);
+		for (int m = 0; m <= MODES; m++)
+			for (size_t k = F->row[m]; k < F->row[m + 1]; k++) {
+				F->Mc[k] *= f[m + 2 * (int)(k - F->row[m])];
+				F->Ms[k] *= f[m + 2 * (int)(k - F->row[m])];
+			}
+		F->base = F->S[n];
+		t = 0;
 	}
 	while (F->from < n && R0 * exp(F->S[n] - F->S[F->from]) >= F->far_r) {
-		double r = R0 * exp(F->S[n] - F->S[F->from]);
-		double pw = pow(r, -2 * F->hs), cm[MODES + 1], sm[MODES + 1];
+		/* Its radius in the units of base: at most e^REBASE / (s+j). */
+		double u = R0 * exp(F->base - F->S[F->from]), iu = 1 / u;
+		double pw[MODES + 1], cm[MODES + 1], sm[MODES + 1];
 		double c1 = F->c[F->from], s1 = F->s[F->from];
 
+		pw[0] = pow(u, -2 * F->hs);
 		cm[0] = 1;
 		sm[0] = 0;
 		for (int m = 1; m <= MODES; m++) {
+			pw[m] = pw[m - 1] * iu;
 			cm[m] = cm[m - 1] * c1 - sm[m - 1] * s1;
 			sm[m] = sm[m - 1] * c1 + cm[m - 1] * s1;
 		}
-		for (int j = 0; j <= MODES; j++, pw /= r)
-			for (int m = j % 2; m <= j; m += 2) {
-				size_t k = jm(j) + (size_t)(m / 2);
+		for (int m = 0; m <= MODES; m++) {
+			const double *w = F->w + F->row[m], *p = pw + m;
+			double *mc = F->Mc + F->row[m], *ms = F->Ms + F->row[m];
+			size_t len = F->row[m + 1] - F->row[m];
 
-				F->Mc[k] += pw * cm[m];
-				F->Ms[k] += pw * sm[m];
+			for (size_t i = 0; i < len; i++) {
+				double v = w[i] * p[2 * i];
+
+				mc[i] += v * cm[m];
+				ms[i] += v * sm[m];
 			}
+		}
 		F->from++;
 	}
-	for (int m = 0; m <= MODES; m++)
-		F->Fc[m] = F->Fs[m] = 0;
-	for (int j = 0; j <= MODES; j++)
-		for (int m = j % 2; m <= j; m += 2) {
-			size_t k = jm(j) + (size_t)(m / 2);
+	far_factors(F, t, f);
+	for (int m = 0; m <= MODES; m++) {
+		const double *mc = F->Mc + F->row[m], *ms = F->Ms + F->row[m];
+		const double *p = f + m;
+		size_t len = F->row[m + 1] - F->row[m];
+		double c = 0, s = 0;
 
-			F->Fc[m] += F->w[k] * F->Mc[k];
-			F->Fs[m] += F->w[k] * F->Ms[k];
+		for (size_t i = 0; i < len; i++) {
+			c += p[2 * i] * mc[i];
+			s += p[2 * i] * ms[i];
 		}
+		F->Fc[m] = c;
+		F->Fs[m] = s;
+	}
 	far_summary(F);
 }
 
@@ -957,7 +987,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		if (P->kernel == K_GAUSSIAN)
 			gauss_step(&F);
 		else if (F.moments && n > 0)
-			far_step(&F, F.S[n] - F.S[n - 1]);
+			far_step(&F);
 		/* Moved out by the growth of every plastochron since birth. */
 		if (P->kernel == K_POWER)
 			for (size_t k = 0; k < n && (k < n - F.from ||
