@@ -141,8 +141,9 @@ struct field {
 	int		 nmodes;	/* of the far field: MODES or GMODES */
 	double		*gt;		/* Gaussian: per primordium cos and
 					   sin (m phi), m <= GMODES */
-	double		 far_slope;	/* the far field's slope, at most */
-	double		 far_curv;	/* and its second derivative */
+	double		 far_curv;	/* the far field's E'', at most */
+	double		 tail[2];	/* the most its modes past BOUND_MODES
+					   add to E and to E' */
 	double		 far_least;	/* and its least on the circle */
 	int		 check;		/* test every gap's bounds */
 	long long	 misses;	/* bounds above their gap's least E */
@@ -212,18 +213,27 @@ far_factors(const struct field *F, double t, double f[MODES + 1])
 		f[j] = f[j - 1] * x;
 }
 
-/* What bounds the far field: its slope, its curvature, its least. */
+/*
+ * The modes the lower bounds evaluate: the others, x_far^m smaller and
+ * less, are bounded by their amplitudes.
+ */
+#define BOUND_MODES	24
+
+/* What bounds the far field: its curvature, its least, its tails. */
 static void
 far_summary(struct field *F)
 {
-	F->far_slope = F->far_curv = 0;
+	F->far_curv = F->tail[0] = F->tail[1] = 0;
 	F->far_least = F->Fc[0];
 	for (int m = 1; m <= F->nmodes; m++) {
 		double a = sqrt(F->Fc[m] * F->Fc[m] + F->Fs[m] * F->Fs[m]);
 
-		F->far_slope += m * a;
 		F->far_curv += (double)m * m * a;
 		F->far_least -= a;
+		if (m > BOUND_MODES) {
+			F->tail[0] += a;
+			F->tail[1] += m * a;
+		}
 	}
 	F->far_least = fmax(0, F->far_least);
 }
@@ -325,13 +335,13 @@ gauss_step(struct field *F)
 	far_summary(F);
 }
 
-/* The far field's E, E', E'' at th, added to e. */
+/* The far field's E, E', E'' at th from its first modes, added to e. */
 static void
-far_energy(const struct field *F, double th, double e[3])
+far_energy(const struct field *F, double th, int modes, double e[3])
 {
 	double c1 = cos(th), s1 = sin(th), cm = 1, sm = 0;
 
-	for (int m = 0; m <= F->nmodes; m++) {
+	for (int m = 0; m <= modes; m++) {
 		double v = F->Fc[m] * cm + F->Fs[m] * sm;
 		double nc;
 
@@ -382,7 +392,7 @@ energy(const struct field *F, double th, double e[3])
 		e[2] += hs * pq * ((hs + 1) * iq * q1 * q1 - q2);
 	}
 	if (F->moments)
-		far_energy(F, th, e);
+		far_energy(F, th, F->nmodes, e);
 }
 
 /*
@@ -562,12 +572,17 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 				coarse += above_floor(F, i, &whole);
 	}
 	if (F->moments && tier >= 2) {
-		/* Smooth beside the near ones: Taylor's, over the whole gap. */
+		/*
+		 * Smooth beside the near ones: Taylor's, over the whole gap,
+		 * from the first modes and what the others add at most.
+		 */
 		double e[3] = { 0, 0, 0 };
+		int modes = F->nmodes < BOUND_MODES ? F->nmodes : BOUND_MODES;
 
-		far_energy(F, (a + b) / 2, e);
-		far = fmax(F->far_least, e[0] - fabs(e[1]) * (b - a) / 2 -
-		    F->far_curv * (b - a) * (b - a) / 8);
+		far_energy(F, (a + b) / 2, modes, e);
+		far = fmax(F->far_least, e[0] - F->tail[0] - (fabs(e[1]) +
+		    F->tail[1]) * (b - a) / 2 - F->far_curv * (b - a) * (b - a) /
+		    8);
 	} else if (F->moments)
 		far = F->far_least;
 	/* The parts' ends: the cuts' own cosines, turned by h between. */
