@@ -90,12 +90,14 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 #define FAR_TAIL	1e-16	/* its truncation, of a primordium's pull */
 #define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
 
-/* A cut's primordium as the bounds want it: in the cuts' order. */
+/*
+ * A cut's primordium as the bounds want it, if it is a near one (the far
+ * field is bounded apart): in the cuts' order.
+ */
 struct cutp {
 	double		 c, s;		/* cos and sin of its angle */
 	double		 q0, r2;	/* R0^2 + r^2 and 2 R0 r */
 	double		 fl;		/* its floor */
-	double		 w;		/* 1, or 0 in the far field */
 };
 
 /*
@@ -149,7 +151,11 @@ struct field {
 	long long	 misses;	/* bounds above their gap's least E */
 	double		 floor;		/* the near ones' least pulls, */
 	double		*fl;		/* each, indexed as r */
-	struct cutp	*cp;		/* the cuts in order, twice round */
+	struct cutp	*cp;		/* the near cuts in order, twice round */
+	size_t		*cpi;		/* their primordia */
+	size_t		 ncp;		/* how many */
+	size_t		*gpos;		/* per gap: the first near cut after
+					   its start, in cp */
 	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
 };
 
@@ -434,10 +440,11 @@ minimise(const struct field *F, double a, double b, double x, double *emin)
 	return x;
 }
 
-/* The circle cut at a primordium's angle: where, and which. */
+/* The circle cut at a primordium's angle: where, which, cos and sin. */
 struct cut {
 	double		 th;
 	size_t		 i;
+	double		 c, s;
 };
 
 static int
@@ -501,8 +508,7 @@ least_pull(const struct field *F, size_t i, const struct part *p)
 static inline double
 cut_above(const struct field *F, const struct cutp *u, const struct part *p)
 {
-	return u->w * pull_at(F, u->q0 - u->r2 * least_cos(u->c, u->s, p)) -
-	    u->fl;
+	return pull_at(F, u->q0 - u->r2 * least_cos(u->c, u->s, p)) - u->fl;
 }
 
 /*
@@ -546,22 +552,24 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
     size_t g, double a, double b, int tier, double *at)
 {
 	int parts = tiers[tier].parts;
-	size_t nc = tiers[tier].cuts ? tiers[tier].cuts : k, fine, skip;
+	size_t kn = F->ncp, nc = tiers[tier].cuts ? tiers[tier].cuts : kn;
+	size_t first, fine, skip;
 	double h = (b - a) / parts, least = HUGE_VAL, far = 0, ch = 1, sh = 0;
 	double coarse = 0;
+	const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
 	struct part pt;
-	size_t first;
 
-	if (nc > k)
-		nc = k;
-	first = (g + k + 1 - nc / 2) % k;
+	if (nc > kn)
+		nc = kn;
+	/* The near cuts about the gap: nc/2 before it, nc/2 after. */
+	first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
 	fine = tiers[tier].fine && tiers[tier].fine < nc && b - a < M_PI ?
 	    tiers[tier].fine : nc;
 	skip = nc / 2 - fine / 2;	/* where the fine ones start */
 	if (fine < nc) {
 		/* The others, and the near ones that are not cuts, once. */
-		struct part whole = { a, b, F->cp[g].c, F->cp[g].s,
-		    F->cp[g + 1].c, F->cp[g + 1].s };
+		struct part whole = { a, b, cuts[g].c, cuts[g].s, end->c,
+		    end->s };
 
 		for (size_t d = 0; d < nc; d++)
 			if (d < skip || d >= skip + fine)
@@ -587,8 +595,8 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		far = F->far_least;
 	/* The parts' ends: the cuts' own cosines, turned by h between. */
 	pt.lo = a;
-	pt.cl = F->cp[g].c;
-	pt.sl = F->cp[g].s;
+	pt.cl = cuts[g].c;
+	pt.sl = cuts[g].s;
 	if (parts > 1) {
 		ch = cos(h);
 		sh = sin(h);
@@ -601,17 +609,16 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			pt.ch = pt.cl * ch - pt.sl * sh;
 			pt.sh = pt.sl * ch + pt.cl * sh;
 		} else {
-			pt.ch = F->cp[g + 1].c;
-			pt.sh = F->cp[g + 1].s;
+			pt.ch = end->c;
+			pt.sh = end->s;
 		}
-		/* The cuts about the gap, g - nc/2 + 1 to g + nc/2. */
+		/* The near cuts about the gap. */
 		if (pt.hi - pt.lo < M_PI)
 			for (size_t d = skip; d < skip + fine; d++)
 				sum += cut_above(F, &F->cp[first + d], &pt);
 		else
 			for (size_t d = 0; d < nc; d++)
-				sum += above_floor(F, cuts[(first + d) % k].i,
-				    &pt);
+				sum += above_floor(F, F->cpi[first + d], &pt);
 		/* And the near ones that are not cuts. */
 		if (tiers[tier].cuts == 0 && fine == nc)
 			for (size_t i = F->from; i + k < F->n; i++)
@@ -666,6 +673,8 @@ cuts_update(struct field *F, struct cut *cuts, size_t k)
 		for (size_t i = 0; i < k; i++) {
 			cuts[i].i = n - 1 - i;
 			cuts[i].th = remainder(F->phi[cuts[i].i], 2 * M_PI);
+			cuts[i].c = F->c[cuts[i].i];
+			cuts[i].s = F->s[cuts[i].i];
 		}
 		qsort(cuts, k, sizeof(*cuts), cutcmp);
 		F->ncut = k;
@@ -677,6 +686,8 @@ cuts_update(struct field *F, struct cut *cuts, size_t k)
 	memmove(cuts + p, cuts + p + 1, (k - 1 - p) * sizeof(*cuts));
 	nw.i = n - 1;
 	nw.th = remainder(F->phi[n - 1], 2 * M_PI);
+	nw.c = F->c[n - 1];
+	nw.s = F->s[n - 1];
 	for (hi = k - 1; lo < hi; ) {	/* the first at or past nw.th */
 		size_t mid = (lo + hi) / 2;
 
@@ -778,14 +789,25 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 		*fl = pull_at(F, (R0 + r) * (R0 + r));
 		F->floor += *fl;
 	}
-	for (size_t c = 0; c < 2 * k; c++) {
-		size_t i = cuts[c % k].i;
+	/* The near cuts, in order; the far ones' pulls are the far field's. */
+	F->ncp = 0;
+	for (size_t c = 0; c < k; c++) {
+		size_t i = cuts[c].i;
 		double r = F->r[F->n - 1 - i];
 
-		F->cp[c] = (struct cutp){ F->c[i], F->s[i], R0 * R0 + r * r,
-		    2 * R0 * r, i >= F->from ? F->fl[F->n - 1 - i] : 0,
-		    i >= F->from };
+		F->gpos[c] = F->ncp;
+		if (i < F->from)
+			continue;
+		F->cpi[F->ncp] = i;
+		F->cp[F->ncp++] = (struct cutp){ F->c[i], F->s[i], R0 * R0 +
+		    r * r, 2 * R0 * r, F->fl[F->n - 1 - i] };
 	}
+	for (size_t c = 0; c < F->ncp; c++) {
+		F->cp[F->ncp + c] = F->cp[c];
+		F->cpi[F->ncp + c] = F->cpi[c];
+	}
+	for (size_t c = 0; c < k; c++)	/* cut c itself is before gap c */
+		F->gpos[c] = F->gpos[c] + (cuts[c].i >= F->from);
 	for (size_t g = 0; g < k; g++) {
 		double a = cuts[g].th, b = gap_end(cuts, k, g);
 
@@ -980,6 +1002,8 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	at = xcalloc(near_count(gmin) + 1, sizeof(*at));
 	heap = xcalloc(near_count(gmin) + 2, sizeof(*heap));
 	F.cp = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cp));
+	F.cpi = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cpi));
+	F.gpos = xcalloc(near_count(gmin) + 1, sizeof(*F.gpos));
 	/*
 	 * The far field, but for the power law's reference sum of all
 	 * pairs; the Gaussian's is all of it.
@@ -1078,6 +1102,8 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(at);
 	free(heap);
 	free(F.cp);
+	free(F.cpi);
+	free(F.gpos);
 	free(F.w);
 	free(F.Mc);
 	free(F.Ms);
