@@ -702,66 +702,34 @@ cuts_update(struct field *F, struct cut *cuts, size_t k)
 }
 
 /*
- * A binary heap of gaps by their bounds lb[], least first and, among
- * equal bounds, the first gap first: heap[0] holds the count, the gaps
- * start at heap[1].
+ * Gap g, while its bound is below the least E found: its bound made
+ * closer, tier by tier, and at the last searched.  Of equal minima the
+ * first gap's is taken, whatever order the gaps are searched in.
  */
-static inline int
-heap_less(const double *lb, size_t a, size_t b)
-{
-	return lb[a] < lb[b] || (lb[a] == lb[b] && a < b);
-}
-
 static void
-heap_push(size_t *heap, size_t g, const double *lb)
+search_gap(const struct field *F, const struct cut *cuts, size_t k,
+    size_t g, double *lb, int *tier, double *at, double *emin, double *th,
+    size_t *gmin)
 {
-	size_t i = ++heap[0];
+	double a = cuts[g].th, b = gap_end(cuts, k, g), e, x;
 
-	for (; i > 1 && heap_less(lb, g, heap[i / 2]); i /= 2)
-		heap[i] = heap[i / 2];
-	heap[i] = g;
-}
+	while (lb[g] < *emin && tier[g] + 1 < TIERS) {
+		double to = at[g], bound = gap_bound(F, cuts, k, g, a, b,
+		    ++tier[g], &to);
 
-/* Put gap g at slot i, or below it, as the gaps under i's place require. */
-static void
-heap_down(size_t *heap, size_t i, size_t g, const double *lb)
-{
-	size_t n = heap[0];
-
-	for (;;) {
-		size_t c = 2 * i;
-
-		if (c > n)
-			break;
-		if (c + 1 <= n && heap_less(lb, heap[c + 1], heap[c]))
-			c++;
-		if (!heap_less(lb, heap[c], g))
-			break;
-		heap[i] = heap[c];
-		i = c;
+		if (bound > lb[g]) {
+			lb[g] = bound;
+			at[g] = to;
+		}
 	}
-	heap[i] = g;
-}
-
-static size_t
-heap_pop(size_t *heap, const double *lb)
-{
-	size_t top = heap[1], last = heap[heap[0]--];
-
-	if (heap[0] > 0)
-		heap_down(heap, 1, last, lb);
-	return top;
-}
-
-/* The k gaps at once, bottom up: O(k), not k pushes. */
-static void
-heap_make(size_t *heap, size_t k, const double *lb)
-{
-	heap[0] = k;
-	for (size_t g = 0; g < k; g++)
-		heap[g + 1] = g;
-	for (size_t i = k / 2; i >= 1; i--)
-		heap_down(heap, i, heap[i], lb);
+	if (!(lb[g] < *emin))
+		return;
+	x = minimise(F, a, b, at[g], &e);
+	if (e < *emin || (e == *emin && g < *gmin)) {
+		*emin = e;
+		*th = x;
+		*gmin = g;
+	}
 }
 
 /*
@@ -775,9 +743,9 @@ heap_make(size_t *heap, size_t k, const double *lb)
  */
 static double
 next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
-    double *at, size_t *heap)
+    double *at)
 {
-	size_t k = F->near < F->n ? F->near : F->n;
+	size_t k = F->near < F->n ? F->near : F->n, best = 0, gmin = k;
 	double th = 0, emin = HUGE_VAL;
 
 	cuts_update(F, cuts, k);
@@ -815,29 +783,18 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 		lb[g] = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
 		    &at[g]) : HUGE_VAL;	/* no room */
 	}
-	heap_make(heap, k, lb);
-	/* The gap of least bound next, while it is below the least E. */
-	while (heap[0] > 0 && lb[heap[1]] < emin) {
-		size_t g = heap_pop(heap, lb);
-		double a = cuts[g].th, b = gap_end(cuts, k, g), e, x;
-
-		if (tier[g] + 1 < TIERS) {
-			double to = at[g], bound = gap_bound(F, cuts, k, g, a, b,
-			    ++tier[g], &to);
-
-			if (bound > lb[g]) {
-				lb[g] = bound;
-				at[g] = to;
-			}
-			heap_push(heap, g, lb);
-			continue;
-		}
-		x = minimise(F, a, b, at[g], &e);
-		if (e < emin) {
-			emin = e;
-			th = x;
-		}
-	}
+	/*
+	 * The gap of least first bound first: its minimum is mostly the
+	 * least, and rules out the most gaps; then every other in turn.
+	 */
+	for (size_t g = 0; g < k; g++)
+		if (lb[g] < lb[best])
+			best = g;
+	search_gap(F, cuts, k, best, lb, tier, at, &emin, &th, &gmin);
+	for (size_t g = 0; g < k; g++)
+		if (g != best && lb[g] < emin)
+			search_gap(F, cuts, k, g, lb, tier, at, &emin, &th,
+			    &gmin);
 	if (F->check)
 		check_bounds(F, cuts, k);
 	return th;
@@ -929,7 +886,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	size_t N;
 	double *lb, *at, mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
 	struct cut *cuts;
-	size_t terms = 0, *heap;
+	size_t terms = 0;
 	int *tier;
 
 	if (!sc->given[S_COUNT]) {
@@ -1000,7 +957,6 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	lb = xcalloc(near_count(gmin) + 1, sizeof(*lb));
 	tier = xcalloc(near_count(gmin) + 1, sizeof(*tier));
 	at = xcalloc(near_count(gmin) + 1, sizeof(*at));
-	heap = xcalloc(near_count(gmin) + 2, sizeof(*heap));
 	F.cp = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cp));
 	F.cpi = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cpi));
 	F.gpos = xcalloc(near_count(gmin) + 1, sizeof(*F.gpos));
@@ -1035,7 +991,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		if (n - F.from > terms)
 			terms = n - F.from;
 		field_add(&F, n == 0 ? 0 : n == 1 ? M_PI : next_angle(&F,
-		    cuts, lb, tier, at, heap));
+		    cuts, lb, tier, at));
 		if (model_progress != NULL && n % 16384 == 0 && n > 0)
 			model_progress((long long)n, 0);
 	}
@@ -1100,7 +1056,6 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(lb);
 	free(tier);
 	free(at);
-	free(heap);
 	free(F.cp);
 	free(F.cpi);
 	free(F.gpos);
