@@ -536,6 +536,53 @@ cut_above(const struct field *F, const struct cutp *u, const struct part *p)
 }
 
 /*
+ * Whether the near cuts from to to - 1 (in F->cp, in order round the
+ * circle) are each less than pi from the far end of the gap: then the
+ * ones before the gap pull least at its end, and at every part's high
+ * end; the ones after, at its start and the parts' low ends.  The
+ * outermost two say it for all.
+ */
+static int
+straight_from(const struct field *F, size_t from, size_t to,
+    const struct part *gap)
+{
+	const struct cutp *l = &F->cp[from], *r = &F->cp[to - 1];
+
+	return from < to && gap->hi - gap->lo < M_PI &&
+	    gap->sh * l->c - gap->ch * l->s > 0 &&	/* sin(b - left) */
+	    r->s * gap->cl - r->c * gap->sl > 0;	/* sin(right - a) */
+}
+
+/*
+ * The near cuts from to to - 1 above their floors, each pulling least
+ * at the point (cx, sx) of the part, the farthest from it.  The loop
+ * for s = 3 apart: the pull without a call, the exponent not tested
+ * every cut (the bounds are most of the time).
+ */
+static inline double
+side_above(const struct field *F, size_t from, size_t to, double cx,
+    double sx)
+{
+	double sum = 0;
+
+	if (F->hs == 1.5)
+		for (size_t d = from; d < to; d++) {
+			const struct cutp *u = &F->cp[d];
+			double q = u->q0 - u->r2 * (u->c * cx + u->s * sx);
+
+			sum += 1 / (q * sqrt(q)) - u->fl;
+		}
+	else
+		for (size_t d = from; d < to; d++) {
+			const struct cutp *u = &F->cp[d];
+
+			sum += pull_at(F, u->q0 - u->r2 * (u->c * cx + u->s *
+			    sx)) - u->fl;
+		}
+	return sum;
+}
+
+/*
  * How much primordium i pulls in part p above its floor, the least it
  * pulls anywhere; 0 for one in the far field, which is bounded apart.
  */
@@ -560,6 +607,9 @@ static const struct {
 	size_t		 fine;
 } tiers[TIERS] = { { 6, 1, 0 }, { 16, 4, 6 }, { 48, 4, 12 }, { 0, 16, 16 } };
 
+/* The last tier's parts: each tier's parts are a number dividing it. */
+#define SUBPARTS	16
+
 /*
  * A lower bound of E in gap g, [a, b]: every pull is positive and
  * falls with the angle from its primordium, so it is at least its
@@ -570,18 +620,29 @@ static const struct {
  * Taylor's bound over the gap, and at least its least on the circle.
  * *at: the middle of the part of least bound, where a search should
  * start.
+ *
+ * A part whose bound reaches stop (the least E found) cannot hold the
+ * minimum.  A closer tier's parts split a coarser tier's and take every
+ * term it took, closer: where the coarser part reached stop, theirs
+ * would too.  *live, if not NULL, holds which of the last tier's parts
+ * have not; the others are passed over, and the bound returned is the
+ * least of the rest, or at least stop.
  */
 static double
 gap_bound(const struct field *F, const struct cut *cuts, size_t k,
-    size_t g, double a, double b, int tier, double *at)
+    size_t g, double a, double b, int tier, double stop, unsigned *live,
+    double *at)
 {
-	int parts = tiers[tier].parts;
+	int parts = tiers[tier].parts, sub = SUBPARTS / parts;
+	unsigned mask = (1u << sub) - 1;	/* part 0's subparts */
 	size_t kn = F->ncp, nc = tiers[tier].cuts ? tiers[tier].cuts : kn;
-	size_t first, fine, skip;
+	size_t first, fine, skip, lo, hi, after;
 	double h = (b - a) / parts, least = HUGE_VAL, far = 0, ch = 1, sh = 0;
 	double coarse = 0;
 	const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
-	struct part pt;
+	struct part pt, whole = { a, b, cuts[g].c, cuts[g].s, end->c,
+	    end->s };
+	int straight;
 
 	if (nc > kn)
 		nc = kn;
@@ -589,20 +650,26 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 	first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
 	fine = tiers[tier].fine && tiers[tier].fine < nc && b - a < M_PI ?
 	    tiers[tier].fine : nc;
-	skip = nc / 2 - fine / 2;	/* where the fine ones start */
+	skip = nc / 2 - fine / 2;
+	lo = first + skip;		/* the fine ones */
+	hi = lo + fine;
+	after = first + nc / 2;		/* the first after the gap */
 	if (fine < nc) {
 		/* The others, and the near ones that are not cuts, once. */
-		struct part whole = { a, b, cuts[g].c, cuts[g].s, end->c,
-		    end->s };
-
-		for (size_t d = 0; d < nc; d++)
-			if (d < skip || d >= skip + fine)
-				coarse += cut_above(F, &F->cp[first + d],
-				    &whole);
+		if (straight_from(F, first, first + nc, &whole))
+			coarse = side_above(F, first, lo, whole.ch, whole.sh) +
+			    side_above(F, hi, first + nc, whole.cl, whole.sl);
+		else
+			for (size_t d = first; d < first + nc; d++)
+				if (d < lo || d >= hi)
+					coarse += cut_above(F, &F->cp[d],
+					    &whole);
 		if (tiers[tier].cuts == 0)
 			for (size_t i = F->from; i + k < F->n; i++)
 				coarse += above_floor(F, i, &whole);
 	}
+	if (F->floor + coarse + F->far_least >= stop)
+		return F->floor + coarse + F->far_least;
 	if (F->moments && tier >= 2) {
 		/*
 		 * Smooth beside the near ones: Taylor's, over the whole gap,
@@ -613,10 +680,11 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 
 		far_energy(F, (a + b) / 2, modes, e);
 		far = fmax(F->far_least, e[0] - F->tail[0] - (fabs(e[1]) +
-		    F->tail[1]) * (b - a) / 2 - F->far_curv * (b - a) * (b - a) /
-		    8);
+		    F->tail[1]) * (b - a) / 2 - F->far_curv * (b - a) *
+		    (b - a) / 8);
 	} else if (F->moments)
 		far = F->far_least;
+	straight = fine > 0 && straight_from(F, lo, hi, &whole);
 	/* The parts' ends: the cuts' own cosines, turned by h between. */
 	pt.lo = a;
 	pt.cl = cuts[g].c;
@@ -626,9 +694,10 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		sh = sin(h);
 	}
 	for (int p = 0; p < parts; p++) {
-		double lo = a + p * h, sum = F->floor + coarse;
+		double sum = F->floor + coarse;
+		unsigned bits = mask << p * sub;
 
-		pt.hi = p + 1 < parts ? lo + h : b;
+		pt.hi = p + 1 < parts ? pt.lo + h : b;
 		if (p + 1 < parts) {
 			pt.ch = pt.cl * ch - pt.sl * sh;
 			pt.sh = pt.sl * ch + pt.cl * sh;
@@ -636,20 +705,26 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			pt.ch = end->c;
 			pt.sh = end->s;
 		}
-		/* The near cuts about the gap. */
-		if (pt.hi - pt.lo < M_PI)
-			for (size_t d = skip; d < skip + fine; d++)
-				sum += cut_above(F, &F->cp[first + d], &pt);
+		if (live != NULL && !(*live & bits))
+			;	/* ruled out by a coarser tier's part */
+		else if (straight)	/* the ones before at hi, after at lo */
+			sum += side_above(F, lo, after, pt.ch, pt.sh) +
+			    side_above(F, after, hi, pt.cl, pt.sl);
+		else if (pt.hi - pt.lo < M_PI)
+			for (size_t d = lo; d < hi; d++)
+				sum += cut_above(F, &F->cp[d], &pt);
 		else
-			for (size_t d = 0; d < nc; d++)
-				sum += above_floor(F, F->cpi[first + d], &pt);
+			for (size_t d = first; d < first + nc; d++)
+				sum += above_floor(F, F->cpi[d], &pt);
 		/* And the near ones that are not cuts. */
 		if (tiers[tier].cuts == 0 && fine == nc)
 			for (size_t i = F->from; i + k < F->n; i++)
 				sum += above_floor(F, i, &pt);
-		if (sum + far < least) {
+		if (live != NULL && (!(*live & bits) || sum + far >= stop))
+			*live &= ~bits;
+		else if (sum + far < least) {
 			least = sum + far;
-			*at = lo + h / 2;
+			*at = (pt.lo + pt.hi) / 2;
 		}
 		pt.lo = pt.hi;
 		pt.cl = pt.ch;
@@ -673,8 +748,8 @@ check_bounds(struct field *F, const struct cut *cuts, size_t k)
 			continue;
 		minimise(F, a, b, (a + b) / 2, &e);
 		for (int t = 0; t < TIERS; t++)
-			if (gap_bound(F, cuts, k, g, a, b, t, &at) > e *
-			    (1 + 1e-12))
+			if (gap_bound(F, cuts, k, g, a, b, t, HUGE_VAL, NULL,
+			    &at) > e * (1 + 1e-12))
 				F->misses++;
 	}
 }
@@ -725,6 +800,13 @@ cuts_update(struct field *F, struct cut *cuts, size_t k)
 	F->cut_n = n;
 }
 
+/* A gap's search: its bound so far, from which tier, and where to start. */
+struct gap {
+	double		 lb, at;
+	int		 tier;
+	unsigned	 live;		/* gap_bound()'s */
+};
+
 /*
  * Gap g, while its bound is below the least E found: its bound made
  * closer, tier by tier, and at the last searched.  Of equal minima the
@@ -732,23 +814,22 @@ cuts_update(struct field *F, struct cut *cuts, size_t k)
  */
 static void
 search_gap(const struct field *F, const struct cut *cuts, size_t k,
-    size_t g, double *lb, int *tier, double *at, double *emin, double *th,
-    size_t *gmin)
+    size_t g, struct gap *gp, double *emin, double *th, size_t *gmin)
 {
 	double a = cuts[g].th, b = gap_end(cuts, k, g), e, x;
 
-	while (lb[g] < *emin && tier[g] + 1 < TIERS) {
-		double to = at[g], bound = gap_bound(F, cuts, k, g, a, b,
-		    ++tier[g], &to);
+	while (gp->lb < *emin && gp->tier + 1 < TIERS) {
+		double to = gp->at, bound = gap_bound(F, cuts, k, g, a, b,
+		    ++gp->tier, *emin, &gp->live, &to);
 
-		if (bound > lb[g]) {
-			lb[g] = bound;
-			at[g] = to;
+		if (bound > gp->lb) {
+			gp->lb = bound;
+			gp->at = to;
 		}
 	}
-	if (!(lb[g] < *emin))
+	if (!(gp->lb < *emin))
 		return;
-	x = minimise(F, a, b, at[g], &e);
+	x = minimise(F, a, b, gp->at, &e);
 	if (e < *emin || (e == *emin && g < *gmin)) {
 		*emin = e;
 		*th = x;
@@ -760,14 +841,12 @@ search_gap(const struct field *F, const struct cut *cuts, size_t k,
  * The angle of least inhibition on the edge.  The circle is cut at the
  * angles of the near newest primordia, so that each gap holds one
  * minimum.  A gap whose lower bound is above the least E found cannot
- * hold the minimum: the gap of least bound is taken next, its bound
- * made closer, and searched when its closest bound still says it may
- * hold the minimum.  As exact as a search of every gap, and most gaps
- * are passed on their first bounds.
+ * hold the minimum: each gap's bound is made closer while it is below,
+ * and the gap searched if its closest bound still is.  As exact as a
+ * search of every gap, and most gaps are passed on their first bounds.
  */
 static double
-next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
-    double *at)
+next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 {
 	size_t k = F->near < F->n ? F->near : F->n, best = 0, gmin = k;
 	double th = 0, emin = HUGE_VAL;
@@ -800,25 +879,39 @@ next_angle(struct field *F, struct cut *cuts, double *lb, int *tier,
 	}
 	for (size_t c = 0; c < k; c++)	/* cut c itself is before gap c */
 		F->gpos[c] = F->gpos[c] + (cuts[c].i >= F->from);
-	for (size_t g = 0; g < k; g++) {
+	/*
+	 * First the gap where the last divergence would put it: its minimum
+	 * is mostly the least, and rules out the most gaps soonest.  Then
+	 * every other in turn.
+	 */
+	if (F->n >= 2) {
+		double want = remainder(2 * F->phi[F->n - 1] - F->phi[F->n - 2],
+		    2 * M_PI);
+
+		best = k - 1;	/* before the first cut: the last gap's */
+		for (size_t lo = 0, hi = k; lo < hi; ) {
+			size_t mid = (lo + hi) / 2;
+
+			if (cuts[mid].th <= want) {
+				best = mid;
+				lo = mid + 1;
+			} else
+				hi = mid;
+		}
+	}
+	for (size_t j = 0; j < k; j++) {
+		size_t g = (best + j) % k;
 		double a = cuts[g].th, b = gap_end(cuts, k, g);
 
-		tier[g] = 0;
-		lb[g] = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
-		    &at[g]) : HUGE_VAL;	/* no room */
+		struct gap *gp = &gaps[g];
+
+		gp->tier = 0;
+		gp->live = (1u << SUBPARTS) - 1;
+		gp->lb = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
+		    emin, &gp->live, &gp->at) : HUGE_VAL;	/* no room */
+		if (gp->lb < emin)
+			search_gap(F, cuts, k, g, gp, &emin, &th, &gmin);
 	}
-	/*
-	 * The gap of least first bound first: its minimum is mostly the
-	 * least, and rules out the most gaps; then every other in turn.
-	 */
-	for (size_t g = 0; g < k; g++)
-		if (lb[g] < lb[best])
-			best = g;
-	search_gap(F, cuts, k, best, lb, tier, at, &emin, &th, &gmin);
-	for (size_t g = 0; g < k; g++)
-		if (g != best && lb[g] < emin)
-			search_gap(F, cuts, k, g, lb, tier, at, &emin, &th,
-			    &gmin);
 	if (F->check)
 		check_bounds(F, cuts, k);
 	return th;
@@ -908,10 +1001,10 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	struct field F = { .P = P, .hs = P->exponent / 2 };
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	size_t N;
-	double *lb, *at, mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
+	double mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
 	struct cut *cuts;
 	size_t terms = 0;
-	int *tier;
+	struct gap *gaps;
 
 	if (!sc->given[S_COUNT]) {
 		scene_error(sc, 1, "missing setting 'count'");
@@ -978,9 +1071,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	F.fl = xcalloc(N + 1, sizeof(*F.fl));
 	/* Room for the most gaps any step looks at (near_count()). */
 	cuts = xcalloc(near_count(gmin) + 1, sizeof(*cuts));
-	lb = xcalloc(near_count(gmin) + 1, sizeof(*lb));
-	tier = xcalloc(near_count(gmin) + 1, sizeof(*tier));
-	at = xcalloc(near_count(gmin) + 1, sizeof(*at));
+	gaps = xcalloc(near_count(gmin) + 1, sizeof(*gaps));
 	F.cp = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cp));
 	F.cpi = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cpi));
 	F.gpos = xcalloc(near_count(gmin) + 1, sizeof(*F.gpos));
@@ -1015,7 +1106,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		if (n - F.from > terms)
 			terms = n - F.from;
 		field_add(&F, n == 0 ? 0 : n == 1 ? M_PI : next_angle(&F,
-		    cuts, lb, tier, at));
+		    cuts, gaps));
 		if (model_progress != NULL && n % 16384 == 0 && n > 0)
 			model_progress((long long)n, 0);
 	}
@@ -1077,9 +1168,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(F.fl);
 	free(F.gt);
 	free(cuts);
-	free(lb);
-	free(tier);
-	free(at);
+	free(gaps);
 	free(F.cp);
 	free(F.cpi);
 	free(F.gpos);
