@@ -341,23 +341,30 @@ gauss_step(struct field *F)
 	far_summary(F);
 }
 
-/* The far field's E, E', E'' at th from its first modes, added to e. */
+/*
+ * The far field's E, E', E'' at th from its first modes, added to e
+ * (summed apart: e might alias the modes, for all the compiler knows).
+ */
 static void
 far_energy(const struct field *F, double th, int modes, double e[3])
 {
-	double c1 = cos(th), s1 = sin(th), cm = 1, sm = 0;
+	double c1 = cos(th), s1 = sin(th), cm = 1, sm = 0, e0 = 0, e1 = 0;
+	double e2 = 0;
 
 	for (int m = 0; m <= modes; m++) {
 		double v = F->Fc[m] * cm + F->Fs[m] * sm;
 		double nc;
 
-		e[0] += v;
-		e[1] += m * (F->Fs[m] * cm - F->Fc[m] * sm);
-		e[2] -= (double)m * m * v;
+		e0 += v;
+		e1 += m * (F->Fs[m] * cm - F->Fc[m] * sm);
+		e2 -= (double)m * m * v;
 		nc = cm * c1 - sm * s1;
 		sm = sm * c1 + cm * s1;
 		cm = nc;
 	}
+	e[0] += e0;
+	e[1] += e1;
+	e[2] += e2;
 }
 
 /*
@@ -378,10 +385,9 @@ pull_at(const struct field *F, double q)
 static void
 energy(const struct field *F, double th, double e[3])
 {
-	double ct = cos(th), st = sin(th);
+	double ct = cos(th), st = sin(th), e0 = 0, e1 = 0, e2 = 0;
 	size_t n = F->n;
 
-	e[0] = e[1] = e[2] = 0;
 	for (size_t i = F->from; i < n; i++) {
 		double r = F->r[n - 1 - i];
 		/* d^2 = R0^2 + r^2 - 2 R0 r cos(th - phi), and its derivatives. */
@@ -393,10 +399,13 @@ energy(const struct field *F, double th, double e[3])
 		double hs = F->hs, iq = 1 / q, p = hs == 1.5 ? iq * sqrt(iq) :
 		    pull_at(F, q), pq = p * iq;
 
-		e[0] += p;
-		e[1] += -hs * pq * q1;
-		e[2] += hs * pq * ((hs + 1) * iq * q1 * q1 - q2);
+		e0 += p;
+		e1 += -hs * pq * q1;
+		e2 += hs * pq * ((hs + 1) * iq * q1 * q1 - q2);
 	}
+	e[0] = e0;
+	e[1] = e1;
+	e[2] = e2;
 	if (F->moments)
 		far_energy(F, th, F->nmodes, e);
 }
