@@ -437,11 +437,12 @@ energy_only(const struct field *F, double th)
 static double
 minimise(const struct field *F, double a, double b, double x, double *emin)
 {
-	double e[3], ends[2] = { a, b };
+	double e[3], ends[2] = { a, b }, last = 0;	/* Newton's step */
 	int done = 0;
 
 	for (int it = 0; it < 100 && !done; it++) {
-		double nx;
+		double nx, step;
+		int newton;
 
 		energy(F, x, e);
 		if (e[1] > 0)
@@ -449,16 +450,24 @@ minimise(const struct field *F, double a, double b, double x, double *emin)
 		else
 			a = x;
 		nx = e[2] > 0 ? x - e[1] / e[2] : (a + b) / 2;
+		newton = e[2] > 0 && nx > a && nx < b;
 		if (!(nx > a && nx < b))
 			nx = (a + b) / 2;
-		if (fabs(nx - x) < 1e-12 || b - a < 1e-12) {
-			/*
-			 * E there from E and its derivatives here, exact to
-			 * the third's (1e-12)^3: one whole sum less a search.
-			 */
-			e[0] += (e[1] + e[2] * (nx - x) / 2) * (nx - x);
+		step = nx - x;
+		/*
+		 * Converged: the step under 1e-12; or a Newton step after
+		 * another, whose error (step / last^2) step^2 by Newton's
+		 * quadratic convergence is under 1e-13, the step under 1e-7.
+		 * E there from E and its derivatives here, exact to E''
+		 * times the step cubed: a whole sum less.
+		 */
+		if (fabs(step) < 1e-12 || b - a < 1e-12 || (newton && last !=
+		    0 && fabs(step) < 1e-7 && fabs(step) * step * step <
+		    1e-13 * last * last)) {
+			e[0] += (e[1] + e[2] * step / 2) * step;
 			done = 1;
 		}
+		last = newton ? step : 0;
 		x = nx;
 	}
 	*emin = done ? e[0] : energy_only(F, x);
