@@ -1030,7 +1030,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	struct field F = { .P = P, .hs = P->exponent / 2 };
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	size_t N;
-	double mean, spread, flip = 1, rim, kdome, scale = 1, gmin;
+	double mean, spread, flip = 1, rim, kdome, scale = 1, gmin, *born;
 	struct cut *cuts;
 	size_t terms = 0;
 	struct gap *gaps;
@@ -1097,6 +1097,9 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	F.c = xcalloc(N, sizeof(*F.c));
 	F.s = xcalloc(N, sizeof(*F.s));
 	F.r = xcalloc(N + 1, sizeof(*F.r));
+	born = xcalloc(N, sizeof(*born));
+	for (size_t i = 0; i < N; i++)
+		born[i] = exp(-F.S[i]);
 	F.fl = xcalloc(N + 1, sizeof(*F.fl));
 	/* Room for the most gaps any step looks at (near_count()). */
 	cuts = xcalloc(near_count(gmin) + 1, sizeof(*cuts));
@@ -1127,11 +1130,18 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 			gauss_step(&F);
 		else if (F.moments && n > 0)
 			far_step(&F);
-		/* Moved out by the growth of every plastochron since birth. */
-		if (P->kernel == K_POWER)
+		/*
+		 * Moved out by the growth of every plastochron since birth,
+		 * e^(S[n] - S[i]): a product, not an exp a primordium a step
+		 * (S stays under AGE_MAX, e^S in a double's range).
+		 */
+		if (P->kernel == K_POWER) {
+			double grown = R0 * exp(F.S[n]);
+
 			for (size_t k = 0; k < n && (k < n - F.from ||
 			    k < F.near); k++)
-				F.r[k] = R0 * exp(F.S[n] - F.S[n - 1 - k]);
+				F.r[k] = grown * born[n - 1 - k];
+		}
 		if (n - F.from > terms)
 			terms = n - F.from;
 		field_add(&F, n == 0 ? 0 : n == 1 ? M_PI : next_angle(&F,
@@ -1194,6 +1204,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(F.s);
 	free(F.S);
 	free(F.r);
+	free(born);
 	free(F.fl);
 	free(F.gt);
 	free(cuts);
