@@ -438,7 +438,7 @@ static double
 minimise(const struct field *F, double a, double b, double x, double *emin)
 {
 	double e[3], ends[2] = { a, b }, last = 0;	/* Newton's step */
-	int done = 0;
+	int done = 0, tried[2] = { 0, 0 };
 
 	for (int it = 0; it < 100 && !done; it++) {
 		double nx, step;
@@ -451,14 +451,28 @@ minimise(const struct field *F, double a, double b, double x, double *emin)
 			a = x;
 		nx = e[2] > 0 ? x - e[1] / e[2] : (a + b) / 2;
 		newton = e[2] > 0 && nx > a && nx < b;
-		if (!(nx > a && nx < b))
+		/*
+		 * Newton's minimum beyond an end of the gap: to the end
+		 * itself, once, where E still falling outwards ends the
+		 * search (E is mostly monotone in a gap whose ends are far
+		 * ones: halving took 40 sums to reach it).  Else halve.
+		 */
+		if (!(nx > a && nx < b) && e[2] > 0 && e[1] < 0 &&
+		    b == ends[1] && !tried[1]) {
+			nx = b;
+			tried[1] = 1;
+		} else if (!(nx > a && nx < b) && e[2] > 0 && e[1] > 0 &&
+		    a == ends[0] && !tried[0]) {
+			nx = a;
+			tried[0] = 1;
+		} else if (!(nx > a && nx < b))
 			nx = (a + b) / 2;
 		step = nx - x;
 		/*
 		 * Converged: the step under 1e-12; or a Newton step after
 		 * another, whose error (step / last^2) step^2 by Newton's
 		 * quadratic convergence is under 1e-13, the step under 1e-7.
-		 * E there from E and its derivatives here, exact to E''
+		 * E there from E and its derivatives here, exact to E'''
 		 * times the step cubed: a whole sum less.
 		 */
 		if (fabs(step) < 1e-12 || b - a < 1e-12 || (newton && last !=
