@@ -430,43 +430,56 @@ energy_only(const struct field *F, double th)
 }
 
 /*
- * The minimum of E inside [a, b], from x: Newton on E' where
- * E'' > 0, bisection on E''s sign otherwise, to 1e-12 rad; or an end,
- * if that is lower.
+ * The minimum of E inside [a, b], from x, to 1e-12 rad: Newton on E'
+ * where E'' > 0 and its step stays inside the bracket of E''s signs,
+ * else the bracket's chord or half; or an end, if that is lower.
  */
 static double
 minimise(const struct field *F, double a, double b, double x, double *emin)
 {
 	double e[3], ends[2] = { a, b }, last = 0;	/* Newton's step */
-	int done = 0, tried[2] = { 0, 0 };
+	double d[2] = { 0, 0 };		/* E' at a and b, once known */
+	int done = 0, tried[2] = { 0, 0 }, moved, kept = -1;
 
 	for (int it = 0; it < 100 && !done; it++) {
 		double nx, step;
 		int newton;
 
 		energy(F, x, e);
-		if (e[1] > 0)
+		moved = e[1] > 0;
+		if (moved) {
 			b = x;
-		else
+			d[1] = e[1];
+		} else {
 			a = x;
+			d[0] = e[1];
+		}
+		/* Illinois: an end kept twice has its slope halved. */
+		if (moved == kept)
+			d[!moved] /= 2;
+		kept = moved;
 		nx = e[2] > 0 ? x - e[1] / e[2] : (a + b) / 2;
 		newton = e[2] > 0 && nx > a && nx < b;
 		/*
-		 * Newton's minimum beyond an end of the gap: to the end
-		 * itself, once, where E still falling outwards ends the
+		 * Where Newton cannot go: to the gap's end that E falls
+		 * towards, once, where E still falling outwards ends the
 		 * search (E is mostly monotone in a gap whose ends are far
-		 * ones: halving took 40 sums to reach it).  Else halve.
+		 * ones: halving took 40 sums to reach it); then between the
+		 * ends where E' changes sign, by its chord (regula falsi).
 		 */
-		if (!(nx > a && nx < b) && e[2] > 0 && e[1] < 0 &&
-		    b == ends[1] && !tried[1]) {
+		if (newton)
+			;
+		else if (e[1] < 0 && b == ends[1] && !tried[1]) {
 			nx = b;
 			tried[1] = 1;
-		} else if (!(nx > a && nx < b) && e[2] > 0 && e[1] > 0 &&
-		    a == ends[0] && !tried[0]) {
+		} else if (e[1] > 0 && a == ends[0] && !tried[0]) {
 			nx = a;
 			tried[0] = 1;
-		} else if (!(nx > a && nx < b))
-			nx = (a + b) / 2;
+		} else {
+			nx = (a * d[1] - b * d[0]) / (d[1] - d[0]);
+			if (!(d[0] < 0 && d[1] > 0 && nx > a && nx < b))
+				nx = (a + b) / 2;
+		}
 		step = nx - x;
 		/*
 		 * Converged: the step under 1e-12; or a Newton step after
