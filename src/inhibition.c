@@ -86,7 +86,7 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 #define R0		1.0	/* the meristem's radius: the unit */
 #define AGE_MAX		700	/* e^700: the largest radius a double holds */
 #define GROWTH_MIN	0.001	/* the slowest growth searched surely */
-#define MODES		96	/* of the power law's far field */
+#define MODES		80	/* of the power law's far field */
 #define FAR_TAIL	1e-12	/* its truncation, of a primordium's pull */
 #define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
 
