@@ -790,8 +790,33 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 }
 
 /*
- * For the tests: every tier's bound of every gap against the least E
- * the search finds in it.  A bound above it is wrong, and would have
+ * The first tier's bound, the only one most gaps get: the floor, the
+ * far field's least, and the nearest near cuts, each at the end of the
+ * gap farther from it; as gap_bound() takes it, without its parts,
+ * tiers and stops.  gap_bound() itself where those ends are not the
+ * farthest points.
+ */
+static double
+first_bound(const struct field *F, const struct cut *cuts, size_t k,
+    size_t g, double a, double b, double *at)
+{
+	size_t kn = F->ncp, nc = tiers[0].cuts < kn ? tiers[0].cuts : kn;
+	size_t first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
+	const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
+	struct part whole = { a, b, cuts[g].c, cuts[g].s, end->c,
+	    end->s };
+
+	if (!straight_from(F, first, first + nc, &whole))
+		return gap_bound(F, cuts, k, g, a, b, 0, HUGE_VAL, NULL, at);
+	*at = (a + b) / 2;
+	return F->floor + (F->moments ? F->far_least : 0) + side_above(F,
+	    first, first + nc / 2, end->c, end->s) + side_above(F, first +
+	    nc / 2, first + nc, cuts[g].c, cuts[g].s);
+}
+
+/*
+ * For the tests: every tier's bound of every gap, first_bound()'s too,
+ * against the least E the search finds in it.  A bound above it is wrong, and would have
  * let the search pass over the gap holding the minimum.
  */
 static void
@@ -807,6 +832,8 @@ check_bounds(struct field *F, const struct cut *cuts, size_t k)
 			if (gap_bound(F, cuts, k, g, a, b, t, HUGE_VAL, NULL,
 			    &at) > e * (1 + 1e-12))
 				F->misses++;
+		if (first_bound(F, cuts, k, g, a, b, &at) > e * (1 + 1e-12))
+			F->misses++;
 	}
 }
 
@@ -963,8 +990,8 @@ next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 
 		gp->tier = 0;
 		gp->live = (1u << SUBPARTS) - 1;
-		gp->lb = b - a >= 1e-12 ? gap_bound(F, cuts, k, g, a, b, 0,
-		    emin, &gp->live, &gp->at) : HUGE_VAL;	/* no room */
+		gp->lb = b - a >= 1e-12 ? first_bound(F, cuts, k, g, a, b,
+		    &gp->at) : HUGE_VAL;	/* no room */
 		if (gp->lb < emin)
 			search_gap(F, cuts, k, g, gp, &emin, &th, &gmin);
 	}
