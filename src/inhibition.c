@@ -265,7 +265,7 @@ far_step(struct field *F)
 		t = 0;
 	}
 	while (F->from < n && R0 * exp(F->S[n] - F->S[F->from]) >= F->far_r) {
-		/* Its radius in the units of base: at most e^REBASE / (s+j). */
+		/* Its radius in base's units; u^-(s+j) under e^REBASE. */
 		double u = R0 * exp(F->base - F->S[F->from]), iu = 1 / u;
 		double pw[MODES + 1], cm[MODES + 1], sm[MODES + 1];
 		double c1 = F->c[F->from], s1 = F->s[F->from];
