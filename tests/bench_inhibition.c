@@ -36,6 +36,13 @@ run(long count, double G, int all_pairs, double *settled)
 	return t;
 }
 
+/* Enough primordia at each G for a tenth of a second or so. */
+static const struct {
+	long		 count;
+	double		 G;
+} sweep[] = { { 2000, 0.3 }, { 6000, 0.1 }, { 30000, 0.02 },
+    { 20000, 0.002 }, { 5000, 0.001 } };
+
 int
 main(void)
 {
@@ -49,5 +56,18 @@ main(void)
 	t3 = run(5000, 0.005, 1, &s3);
 	printf("side by side, 5000 primordia: far field %.3f s, all pairs %.3f "
 	    "s: %.1fx (settled %.6f and %.6f)\n", t2, t3, t3 / t2, s2, s3);
+	/*
+	 * The cost a primordium against G: the slower the growth, the more
+	 * primordia are near and the more gaps the circle has.
+	 */
+	for (size_t i = 0; i < sizeof(sweep) / sizeof(sweep[0]); i++) {
+		double s, t = run(sweep[i].count, sweep[i].G, 0, &s);
+
+		printf("G = %g, %ld primordia: %.1f us each (settled at %.4f "
+		    "degrees)\n", sweep[i].G, sweep[i].count, t /
+		    (double)sweep[i].count * 1e6, s);
+		if (t < 0)
+			return 1;
+	}
 	return t1 < 0 || t2 < 0 || t3 < 0;
 }
