@@ -591,10 +591,13 @@ static int
 straight_from(const struct field *F, size_t from, size_t to,
     const struct part *gap)
 {
-	const struct cutp *l = &F->cp[from], *r = &F->cp[to - 1];
+	const struct cutp *l, *r;
 
-	return from < to && gap->hi - gap->lo < M_PI &&
-	    gap->sh * l->c - gap->ch * l->s > 0 &&	/* sin(b - left) */
+	if (!(from < to && gap->hi - gap->lo < M_PI))
+		return 0;
+	l = &F->cp[from];
+	r = &F->cp[to - 1];
+	return gap->sh * l->c - gap->ch * l->s > 0 &&	/* sin(b - left) */
 	    r->s * gap->cl - r->c * gap->sl > 0;	/* sin(right - a) */
 }
 
