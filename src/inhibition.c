@@ -467,15 +467,13 @@ minimise(const struct field *F, double a, double b, double x, double *emin)
 		 * ones: halving took 40 sums to reach it); then between the
 		 * ends where E' changes sign, by its chord (regula falsi).
 		 */
-		if (newton)
-			;
-		else if (e[1] < 0 && b == ends[1] && !tried[1]) {
+		if (!newton && e[1] < 0 && b == ends[1] && !tried[1]) {
 			nx = b;
 			tried[1] = 1;
-		} else if (e[1] > 0 && a == ends[0] && !tried[0]) {
+		} else if (!newton && e[1] > 0 && a == ends[0] && !tried[0]) {
 			nx = a;
 			tried[0] = 1;
-		} else {
+		} else if (!newton) {
 			nx = (a * d[1] - b * d[0]) / (d[1] - d[0]);
 			if (!(d[0] < 0 && d[1] > 0 && nx > a && nx < b))
 				nx = (a + b) / 2;
@@ -601,6 +599,13 @@ straight_from(const struct field *F, size_t from, size_t to,
 	    r->s * gap->cl - r->c * gap->sl > 0;	/* sin(right - a) */
 }
 
+/* A near cut's squared distance to the edge point (cx, sx). */
+static inline double
+cut_q(const struct cutp *u, double cx, double sx)
+{
+	return u->q0 - u->r2 * (u->c * cx + u->s * sx);
+}
+
 /*
  * The near cuts from to to - 1 above their floors, each pulling least
  * at the point (cx, sx) of the part, the farthest from it.  The loop
@@ -619,25 +624,20 @@ side_above(const struct field *F, size_t from, size_t to, double cx,
 		/* Two at once, 1/x + 1/y = (x + y) / xy: one division. */
 		for (; d + 1 < to; d += 2) {
 			const struct cutp *u = &F->cp[d], *v = u + 1;
-			double q = u->q0 - u->r2 * (u->c * cx + u->s * sx);
-			double p = v->q0 - v->r2 * (v->c * cx + v->s * sx);
+			double q = cut_q(u, cx, sx), p = cut_q(v, cx, sx);
 			double x = q * sqrt(q), y = p * sqrt(p);
 
 			sum += (x + y) / (x * y) - u->fl - v->fl;
 		}
 		if (d < to) {
-			const struct cutp *u = &F->cp[d];
-			double q = u->q0 - u->r2 * (u->c * cx + u->s * sx);
+			double q = cut_q(&F->cp[d], cx, sx);
 
-			sum += 1 / (q * sqrt(q)) - u->fl;
+			sum += 1 / (q * sqrt(q)) - F->cp[d].fl;
 		}
 	} else
-		for (size_t d = from; d < to; d++) {
-			const struct cutp *u = &F->cp[d];
-
-			sum += pull_at(F, u->q0 - u->r2 * (u->c * cx + u->s *
-			    sx)) - u->fl;
-		}
+		for (size_t d = from; d < to; d++)
+			sum += pull_at(F, cut_q(&F->cp[d], cx, sx)) -
+			    F->cp[d].fl;
 	return sum;
 }
 
@@ -819,8 +819,9 @@ first_bound(const struct field *F, const struct cut *cuts, size_t k,
 
 /*
  * For the tests: every tier's bound of every gap, first_bound()'s too,
- * against the least E the search finds in it.  A bound above it is wrong, and would have
- * let the search pass over the gap holding the minimum.
+ * against the least E the search finds in it.  A bound above it is
+ * wrong, and would have let the search pass over the gap holding the
+ * minimum.
  */
 static void
 check_bounds(struct field *F, const struct cut *cuts, size_t k)
@@ -952,19 +953,17 @@ next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 		size_t i = cuts[c].i;
 		double r = F->r[F->n - 1 - i];
 
-		F->gpos[c] = F->ncp;
-		if (i < F->from)
-			continue;
-		F->cpi[F->ncp] = i;
-		F->cp[F->ncp++] = (struct cutp){ F->c[i], F->s[i], R0 * R0 +
-		    r * r, 2 * R0 * r, F->fl[F->n - 1 - i] };
+		if (i >= F->from) {
+			F->cpi[F->ncp] = i;
+			F->cp[F->ncp++] = (struct cutp){ F->c[i], F->s[i],
+			    R0 * R0 + r * r, 2 * R0 * r, F->fl[F->n - 1 - i] };
+		}
+		F->gpos[c] = F->ncp;	/* cut c itself is before gap c */
 	}
 	for (size_t c = 0; c < F->ncp; c++) {
 		F->cp[F->ncp + c] = F->cp[c];
 		F->cpi[F->ncp + c] = F->cpi[c];
 	}
-	for (size_t c = 0; c < k; c++)	/* cut c itself is before gap c */
-		F->gpos[c] = F->gpos[c] + (cuts[c].i >= F->from);
 	/*
 	 * First the gap where the last divergence would put it: its minimum
 	 * is mostly the least, and rules out the most gaps soonest.  Then
@@ -988,7 +987,6 @@ next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 	for (size_t j = 0; j < k; j++) {
 		size_t g = (best + j) % k;
 		double a = cuts[g].th, b = gap_end(cuts, k, g);
-
 		struct gap *gp = &gaps[g];
 
 		gp->tier = 0;

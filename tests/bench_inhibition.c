@@ -63,11 +63,11 @@ main(void)
 	for (size_t i = 0; i < sizeof(sweep) / sizeof(sweep[0]); i++) {
 		double s, t = run(sweep[i].count, sweep[i].G, 0, &s);
 
+		if (t < 0)
+			return 1;
 		printf("G = %g, %ld primordia: %.1f us each (settled at %.4f "
 		    "degrees)\n", sweep[i].G, sweep[i].count, t /
 		    (double)sweep[i].count * 1e6, s);
-		if (t < 0)
-			return 1;
 	}
 	return t1 < 0 || t2 < 0 || t3 < 0;
 }
