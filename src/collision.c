@@ -135,8 +135,15 @@ slot_find(const struct coll *C, const int32_t k[3])
 static inline int32_t
 cell1(double v)
 {
-	v = floor(v);
-	return v < -1e9 ? -1000000000 : v > 1e9 ? 1000000000 : (int32_t)v;
+	int32_t i;
+
+	if (!(v >= -1e9))
+		return -1000000000;
+	if (v > 1e9)
+		return 1000000000;
+	/* floor() without the call: truncation, one down below zero. */
+	i = (int32_t)v;
+	return i - (v < i);
 }
 
 static void
