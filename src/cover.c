@@ -373,21 +373,42 @@ least_proj(const struct cover *cv, int z, int32_t jz, double x, double y,
  * of those arcs' points, plus that, bounds it.  One middle arc for the
  * row and h[k] left the bound of cells beside a large primordium a
  * quarter of r_min loose: with a falling radius, walks stopped there.
+ *
+ * Sub-row s at (rho_s, z_s) is at squared distance rho_s^2 + rho^2 +
+ * (z_s - z)^2 - 2 rho_s m from (x, y, z), m the projection, so a row
+ * keeps A_s (all but the last term) and B_s = 2 rho_s: what is left
+ * for a cell is the least m and four products.
  */
-static inline double
-farthest(const struct cover *cv, int32_t k, int32_t jz, double x, double y,
-    double z, double rho)
-{
-	double m = least_proj(cv, cv->bz[k >> 3], jz, x, y, rho);
-	double far = -HUGE_VAL;
+struct subs {
+	double	 A[COVER_SUB], B[COVER_SUB];
+};
 
+static void
+subs_of(const struct cover *cv, int32_t k, double z, double rho,
+    struct subs *sb)
+{
 	for (int sa = 0; sa < COVER_SUB; sa++) {
 		const double *sp = cv->sub[k * COVER_SUB + sa];
-		double dz = sp[1] - z, f = sp[0] * (sp[0] - 2 * m) + dz * dz;
+		double dz = sp[1] - z;
+
+		sb->A[sa] = sp[0] * sp[0] + dz * dz + rho * rho;
+		sb->B[sa] = 2 * sp[0];
+	}
+}
+
+static inline double
+farthest(const struct cover *cv, int zk, int32_t jz, double x, double y,
+    double rho, const struct subs *sb, double hk)
+{
+	double m = least_proj(cv, zk, jz, x, y, rho);
+	double far = sb->A[0] - sb->B[0] * m;
+
+	for (int sa = 1; sa < COVER_SUB; sa++) {
+		double f = sb->A[sa] - sb->B[sa] * m;
 
 		far = f > far ? f : far;
 	}
-	return sqrt(far + rho * rho) + cv->h[k] / COVER_SUB;
+	return sqrt(far) + hk / COVER_SUB;
 }
 
 void
@@ -425,6 +446,8 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		double reach2 = reach * reach;
 		uint8_t *tiles = &cv->u[cv->bbase[k >> 3] * 64 + (size_t)(k & 7)];
 		size_t stride = (size_t)cv->bstride[k >> 3] * 64;
+		struct subs sb;
+		int have_sb = 0;
 
 		if (lim <= 0)
 			continue;
@@ -474,8 +497,15 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			 * cell's size will do; farther out, only the sub-rows'
 			 * farthest points bound it closely enough to matter.
 			 */
-			U = D2 < near2 ? sqrt(D2) - r + dk :
-			    farthest(cv, k, j, x, y, z, rho) - r;
+			if (D2 < near2)
+				U = sqrt(D2) - r + dk;
+			else {
+				if (!have_sb) {
+					subs_of(cv, k, z, rho, &sb);
+					have_sb = 1;
+				}
+				U = farthest(cv, zk, j, x, y, rho, &sb, hk) - r;
+			}
 			lower_at(up, inv_q, U);
 		}
 	}
