@@ -429,7 +429,8 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 	for (int32_t k = k0; k <= k1; k++) {
 		double rk = cv->rho_c[k], dz = cv->z_c[k] - z;
 		double reach = GROW * r - cv->d[k] + r;
-		double lim = reach * reach - dz * dz, m = 4 * rk * rho;
+		double lim = reach * reach - dz * dz - (rk - rho) * (rk - rho);
+		double m = 4 * rk * rho;
 		/* Within this of the middle, the simple bound is under tight. */
 		double near = cv->tight + r - cv->d[k];
 		double near2 = near > 0 ? near * near : 0;
@@ -452,12 +453,13 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		if (lim <= 0)
 			continue;
 		/*
-		 * |P - Q|^2 >= 4 rk rho sin^2(dphi / 2) + dz^2, and the
-		 * middle of column jc + dj is at least |dj| - 1/2 columns
-		 * from the primordium's angle: out of reach past dphi/2 =
-		 * asin(x), x^2 = lim / m, which is at most x / sqrt(1 -
-		 * x^2) (its tangent), close for the small x of most rows
-		 * and without asin().
+		 * |P - Q|^2 = (rk - rho)^2 + 4 rk rho sin^2(dphi / 2) +
+		 * dz^2 (near a dome's top rows differ in rho more than in
+		 * z), and the middle of column jc + dj is at least |dj| -
+		 * 1/2 columns from the primordium's angle: out of reach
+		 * past dphi/2 = asin(x), x^2 = lim / m, which is at most
+		 * x / sqrt(1 - x^2) (its tangent), close for the small x
+		 * of most rows and without asin().
 		 */
 		wf = m > lim ? sqrt(lim / (m - lim)) / M_PI * ncol + 0.5 : ncol;
 		w = wf < ncol ? (int32_t)ceil(wf) : ncol;
