@@ -13,7 +13,9 @@
  * 1.15 r from a centre, so cells a little over r/2 a side (d about
  * 0.6 r) are mostly covered as soon as their neighbours are placed;
  * the front and true holes are not, and loose packings leave some
- * cells to refine (collision.c) or to look at exactly.
+ * cells to refine (collision.c) or to look at exactly.  A bound under
+ * most of the smallest radius covers a cell for every walk to come:
+ * such a cell needs no closer look and no lowering again.
  *
  * Each column also remembers how many rows from the base are covered,
  * and the largest bound among them, so a walk jumps over all of them
@@ -32,7 +34,7 @@
 #define CELLS_MAX	(1 << 26)
 #define U_NONE		UINT8_MAX
 #define U_STEPS		64	/* steps of the bound per row height: up to 4 rows */
-#define TIGHT		0.5	/* of r_min: a bound worth the closer look */
+#define TIGHT		0.95	/* of r_min: bounds under it cover a cell for good */
 #define GROW		1.05	/* the largest next radius worth a bound, per r */
 
 /*
@@ -139,6 +141,10 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		;
 	cv->q = a / U_STEPS;
 	cv->inv_q = U_STEPS / a;
+	/* The bounds under tight: steps 0 .. final - 1. */
+	for (cv->final = 0; cv->final < U_NONE && (cv->final + 1) * cv->q <
+	    cv->tight; cv->final++)
+		;
 	cv->t_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->t_row));
 	cv->rho_c = xcalloc((size_t)cv->rows, sizeof(*cv->rho_c));
 	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
@@ -444,6 +450,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 		 * again each cell.  Its cells, as cell_z() finds them.
 		 */
 		double dk = cv->d[k], hk = cv->h[k], q = cv->q, inv_q = cv->inv_q;
+		uint8_t final = cv->final;
 		double reach2 = reach * reach;
 		uint8_t *tiles = &cv->u[cv->bbase[k >> 3] * 64 + (size_t)(k & 7)];
 		size_t stride = (size_t)cv->bstride[k >> 3] * 64;
@@ -475,6 +482,11 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			uint8_t u, *up;
 
 			j += j < 0 ? ncol : j >= ncol ? -ncol : 0;
+			up = tiles + (size_t)(j >> 3) * stride + (size_t)((j & 7) <<
+			    3);
+			/* Covered for every radius already: nothing to gain. */
+			if ((u = *up) < final)
+				continue;
 			dx = rk * mid[2 * j] - x;
 			dy = rk * mid[2 * j + 1] - y;
 			D2 = dx * dx + dy * dy + dz * dz;
@@ -486,9 +498,7 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 			 * middle's distance less r): taking those too
 			 * changed no walk's stops, measured.
 			 */
-			up = tiles + (size_t)(j >> 3) * stride + (size_t)((j & 7) <<
-			    3);
-			if ((u = *up) != U_NONE) {
+			if (u != U_NONE) {
 				double L = (u - 2) * q + r - hk;
 
 				if (L <= 0 || D2 >= L * L)

@@ -19,7 +19,10 @@
  */
 struct cover {
 	double		 a;		/* row height, arc length */
-	double		 tight;		/* bounds above this get a closer look */
+	double		 tight;		/* bounds above this get a closer look;
+					   under it a cell is covered for
+					   every radius, for good */
+	uint8_t		 final;		/* the bounds in steps that are */
 	int32_t		 rows, cols;
 	double		*t_row;		/* rows + 1: t at each row's start,
 					   then the band's end */
