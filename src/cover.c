@@ -417,14 +417,151 @@ farthest(const struct cover *cv, int zk, int32_t jz, double x, double y,
 	return sqrt(far) + hk / COVER_SUB;
 }
 
+/*
+ * What cover_add knows while it works along a row: the new primordium,
+ * the row's middle ring and reach, and the sub-row terms once a cell
+ * needs them.
+ */
+struct row_add {
+	double		 x, y, z, r, rho;	/* the primordium */
+	int32_t		 k;
+	int		 zk;
+	double		 rk, dz;		/* the row's middle */
+	double		 reach2, near2, dk, hk, q, inv_q;
+	uint8_t		 final;
+	const double	*mid;
+	int		 have_sb;
+	struct subs	 sb;
+};
+
+/* Lower cell j of the row, at *up, to what the new primordium proves. */
+static inline void
+cell_add(const struct cover *cv, struct row_add *ra, int32_t j, uint8_t *up)
+{
+	double dx, dy, D2, U;
+	uint8_t u;
+
+	/* Covered for every radius already: nothing to gain. */
+	if ((u = *up) < ra->final)
+		return;
+	dx = ra->rk * ra->mid[2 * j] - ra->x;
+	dy = ra->rk * ra->mid[2 * j + 1] - ra->y;
+	D2 = dx * dx + dy * dy + ra->dz * ra->dz;
+	if (D2 >= ra->reach2)
+		return;
+	/*
+	 * No square root where the bound would drop by less than h at
+	 * most (both bounds are at least the middle's distance less r):
+	 * taking those too changed no walk's stops, measured.
+	 */
+	if (u != U_NONE) {
+		double L = (u - 2) * ra->q + ra->r - ra->hk;
+
+		if (L <= 0 || D2 >= L * L)
+			return;
+	}
+	/*
+	 * Near the middle, the middle's distance and the cell's size will
+	 * do; farther out, only the sub-rows' farthest points bound it
+	 * closely enough to matter.
+	 */
+	if (D2 < ra->near2)
+		U = sqrt(D2) - ra->r + ra->dk;
+	else {
+		if (!ra->have_sb) {
+			subs_of(cv, ra->k, ra->z, ra->rho, &ra->sb);
+			ra->have_sb = 1;
+		}
+		U = farthest(cv, ra->zk, j, ra->x, ra->y, ra->rho, &ra->sb,
+		    ra->hk) - ra->r;
+	}
+	lower_at(up, ra->inv_q, U);
+}
+
+/* The cells of row k within reach of the primordium, column jphi's. */
+static void
+row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
+{
+	double reach = GROW * ra->r - cv->d[k] + ra->r, m, wf, lim;
+	/* Within this of the middle, the simple bound is under tight. */
+	double near = cv->tight + ra->r - cv->d[k];
+	int zk = cv->bz[k >> 3];
+	int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, run[2][2];
+	/* The row's cells, as cell_z() finds them. */
+	uint8_t *tiles = &cv->u[cv->bbase[k >> 3] * 64 + (size_t)(k & 7)];
+	size_t stride = (size_t)cv->bstride[k >> 3] * 64;
+	int nrun = 0;
+
+	ra->k = k;
+	ra->zk = zk;
+	ra->rk = cv->rho_c[k];
+	ra->dz = cv->z_c[k] - ra->z;
+	ra->reach2 = reach * reach;
+	ra->near2 = near > 0 ? near * near : 0;
+	ra->dk = cv->d[k];
+	ra->hk = cv->h[k];
+	ra->mid = cv->mid[zk];
+	ra->have_sb = 0;
+	lim = ra->reach2 - ra->dz * ra->dz - (ra->rk - ra->rho) * (ra->rk -
+	    ra->rho);
+	m = 4 * ra->rk * ra->rho;
+	if (lim <= 0)
+		return;
+	/*
+	 * |P - Q|^2 = (rk - rho)^2 + 4 rk rho sin^2(dphi / 2) + dz^2 (near
+	 * a dome's top rows differ in rho more than in z), and the middle
+	 * of column jc + dj is at least |dj| - 1/2 columns from the
+	 * primordium's angle: out of reach past dphi/2 = asin(x), x^2 =
+	 * lim / m, which is at most x / sqrt(1 - x^2) (its tangent), close
+	 * for the small x of most rows and without asin().
+	 */
+	wf = m > lim ? sqrt(lim / (m - lim)) / M_PI * ncol + 0.5 : ncol;
+	w = wf < ncol ? (int32_t)ceil(wf) : ncol;
+	/*
+	 * Columns jc - w .. jc + w round the ring: at most two runs of
+	 * columns in order, a cell's place one step on from the last's.
+	 */
+	if (2 * w + 1 >= ncol) {	/* the whole ring, once */
+		run[nrun][0] = 0;
+		run[nrun++][1] = ncol - 1;
+	} else if (jc - w < 0) {
+		run[nrun][0] = jc - w + ncol;
+		run[nrun++][1] = ncol - 1;
+		run[nrun][0] = 0;
+		run[nrun++][1] = jc + w;
+	} else if (jc + w >= ncol) {
+		run[nrun][0] = 0;
+		run[nrun++][1] = jc + w - ncol;
+		run[nrun][0] = jc - w;
+		run[nrun++][1] = ncol - 1;
+	} else {
+		run[nrun][0] = jc - w;
+		run[nrun++][1] = jc + w;
+	}
+	for (int i = 0; i < nrun; i++) {
+		int32_t j = run[i][0];
+		uint8_t *up = tiles + (size_t)(j >> 3) * stride + (size_t)((j &
+		    7) << 3);
+
+		for (; j <= run[i][1]; j++, up += (j & 7) != 0 ? 8 : stride - 56)
+			cell_add(cv, ra, j, up);
+	}
+}
+
 void
 cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 {
 	/* Rows as far as the bound can bring a cell under GROW r. */
-	int32_t kq = cover_row(cv, t), span, k0, k1;
-	double rows = ceil(GROW * r / cv->a), rho = sqrt(x * x + y * y);
-	double phi = atan2(y, x);
-	int32_t jphi;
+	int32_t kq = cover_row(cv, t), span, k0, k1, jphi;
+	double rows = ceil(GROW * r / cv->a), phi = atan2(y, x);
+	/*
+	 * The row's constants live here, not in *cv: the cells' writes
+	 * (bytes, which may alias anything) would have them read again
+	 * after each cell.
+	 */
+	struct row_add ra = { .x = x, .y = y, .z = z, .r = r,
+	    .rho = sqrt(x * x + y * y), .q = cv->q, .inv_q = cv->inv_q,
+	    .final = cv->final };
 
 	span = rows < cv->rows ? (int32_t)rows : cv->rows;
 	k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
@@ -432,95 +569,8 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 	if (phi < 0)
 		phi += 2 * M_PI;
 	jphi = cover_col(cv, phi);
-	for (int32_t k = k0; k <= k1; k++) {
-		double rk = cv->rho_c[k], dz = cv->z_c[k] - z;
-		double reach = GROW * r - cv->d[k] + r;
-		double lim = reach * reach - dz * dz - (rk - rho) * (rk - rho);
-		double m = 4 * rk * rho;
-		/* Within this of the middle, the simple bound is under tight. */
-		double near = cv->tight + r - cv->d[k];
-		double near2 = near > 0 ? near * near : 0;
-		int zk = cv->bz[k >> 3];
-		int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, lo, hi;
-		double wf;
-		const double *mid = cv->mid[zk];
-		/*
-		 * The row's own: read once here, as the cells' writes below
-		 * (bytes, which may alias anything) would have them read
-		 * again each cell.  Its cells, as cell_z() finds them.
-		 */
-		double dk = cv->d[k], hk = cv->h[k], q = cv->q, inv_q = cv->inv_q;
-		uint8_t final = cv->final;
-		double reach2 = reach * reach;
-		uint8_t *tiles = &cv->u[cv->bbase[k >> 3] * 64 + (size_t)(k & 7)];
-		size_t stride = (size_t)cv->bstride[k >> 3] * 64;
-		struct subs sb;
-		int have_sb = 0;
-
-		if (lim <= 0)
-			continue;
-		/*
-		 * |P - Q|^2 = (rk - rho)^2 + 4 rk rho sin^2(dphi / 2) +
-		 * dz^2 (near a dome's top rows differ in rho more than in
-		 * z), and the middle of column jc + dj is at least |dj| -
-		 * 1/2 columns from the primordium's angle: out of reach
-		 * past dphi/2 = asin(x), x^2 = lim / m, which is at most
-		 * x / sqrt(1 - x^2) (its tangent), close for the small x
-		 * of most rows and without asin().
-		 */
-		wf = m > lim ? sqrt(lim / (m - lim)) / M_PI * ncol + 0.5 : ncol;
-		w = wf < ncol ? (int32_t)ceil(wf) : ncol;
-		lo = -w;
-		hi = w;
-		if (2 * w + 1 >= ncol) {	/* the whole ring, once */
-			lo = -jc;
-			hi = ncol - 1 - jc;
-		}
-		for (int32_t dj = lo; dj <= hi; dj++) {
-			int32_t j = jc + dj;
-			double dx, dy, D2, U;
-			uint8_t u, *up;
-
-			j += j < 0 ? ncol : j >= ncol ? -ncol : 0;
-			up = tiles + (size_t)(j >> 3) * stride + (size_t)((j & 7) <<
-			    3);
-			/* Covered for every radius already: nothing to gain. */
-			if ((u = *up) < final)
-				continue;
-			dx = rk * mid[2 * j] - x;
-			dy = rk * mid[2 * j + 1] - y;
-			D2 = dx * dx + dy * dy + dz * dz;
-			if (D2 >= reach2)
-				continue;
-			/*
-			 * No square root where the bound would drop by less
-			 * than h at most (both bounds are at least the
-			 * middle's distance less r): taking those too
-			 * changed no walk's stops, measured.
-			 */
-			if (u != U_NONE) {
-				double L = (u - 2) * q + r - hk;
-
-				if (L <= 0 || D2 >= L * L)
-					continue;
-			}
-			/*
-			 * Near the middle, the middle's distance and the
-			 * cell's size will do; farther out, only the sub-rows'
-			 * farthest points bound it closely enough to matter.
-			 */
-			if (D2 < near2)
-				U = sqrt(D2) - r + dk;
-			else {
-				if (!have_sb) {
-					subs_of(cv, k, z, rho, &sb);
-					have_sb = 1;
-				}
-				U = farthest(cv, zk, j, x, y, rho, &sb, hk) - r;
-			}
-			lower_at(up, inv_q, U);
-		}
-	}
+	for (int32_t k = k0; k <= k1; k++)
+		row_add(cv, &ra, k, jphi);
 }
 
 /* The row where t moves next in column j, below its head: an exception or the head. */
