@@ -377,15 +377,16 @@ static int
 refine(struct coll *C, int32_t k, int32_t j, double r)
 {
 	const struct cover *cv = &C->cover;
-	double phi0, mid[2], dphi = cover_span(cv, k, j, &phi0, mid);
-	double worst = 0, q = cv->d[k] + r + C->rmax, cs[COVER_SUB][2];
-	double mx = cv->rho_c[k] * mid[0], my = cv->rho_c[k] * mid[1];
-	double mz = cv->z_c[k];
+	double mid[2], cs[COVER_SUB][2], worst = 0, q = cv->d[k] + r + C->rmax;
+	double mx, my, mz = cv->z_c[k];
 	struct near {
 		double	 x, y, z, r, d2;
 	} near[64];
 	int32_t nn = 0, lo[3], hi[3];
 
+	cover_dirs(cv, k, j, mid, cs);
+	mx = cv->rho_c[k] * mid[0];
+	my = cv->rho_c[k] * mid[1];
 	if (box_cells(C, mx, my, mz, q, lo, hi) > 64)
 		return 0;	/* radii have outgrown the grid: not worth it */
 	for (int32_t a = lo[0]; a <= hi[0]; a++)
@@ -419,12 +420,6 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 					nn++;
 				}
 			}
-	for (int sb = 0; sb < COVER_SUB; sb++) {
-		double phi = phi0 + dphi * (sb + 0.5) / COVER_SUB;
-
-		cs[sb][0] = cos(phi);
-		cs[sb][1] = sin(phi);
-	}
 	for (int sa = 0; sa < COVER_SUB; sa++) {
 		const double *p = cv->sub[k * COVER_SUB + sa];
 

@@ -224,6 +224,13 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 
 		if (cv->mid[z] != NULL)
 			continue;	/* only the z in use */
+		for (int i = 0; i < COVER_SUB; i++) {
+			double off = ((i + 0.5) / COVER_SUB - 0.5) * 2 * M_PI /
+			    ncol;
+
+			cv->sub_turn[z][i][0] = cos(off);
+			cv->sub_turn[z][i][1] = sin(off);
+		}
 		cv->mid[z] = xcalloc(2 * (size_t)ncol, sizeof(double));
 		cv->edge[z] = xcalloc(2 * (size_t)ncol + 2, sizeof(double));
 		for (int32_t j = 0; j <= ncol; j++) {
@@ -282,18 +289,22 @@ cover_col(const struct cover *cv, double phi)
 	return j < 0 ? 0 : j >= cv->cols ? cv->cols - 1 : j;
 }
 
-double
-cover_span(const struct cover *cv, int32_t k, int32_t j, double *phi0,
-    double mid[2])
+void
+cover_dirs(const struct cover *cv, int32_t k, int32_t j, double mid[2],
+    double sub[COVER_SUB][2])
 {
 	int z = cv->bz[k >> 3];
-	int32_t ncol = cv->cols >> z;
+	const double *m = &cv->mid[z][2 * (j >> z)];
 
-	j >>= z;
-	*phi0 = j * 2 * M_PI / ncol;
-	mid[0] = cv->mid[z][2 * j];
-	mid[1] = cv->mid[z][2 * j + 1];
-	return 2 * M_PI / ncol;
+	mid[0] = m[0];
+	mid[1] = m[1];
+	/* The middle turned by each sub-column's offset from it. */
+	for (int i = 0; i < COVER_SUB; i++) {
+		const double *o = cv->sub_turn[z][i];
+
+		sub[i][0] = m[0] * o[0] - m[1] * o[1];
+		sub[i][1] = m[1] * o[0] + m[0] * o[1];
+	}
 }
 
 /* The last row in [lo, hi] that starts at or before t, else lo. */

@@ -42,6 +42,9 @@ struct cover {
 	double		*mid[COVER_Z];	/* per z: cos, sin of each column's
 					   middle angle */
 	double		*edge[COVER_Z];	/* per z: of its edges' (cols + 1) */
+	double		 sub_turn[COVER_Z][COVER_SUB][2];	/* per z:
+					   cos, sin of each sub-column's
+					   middle less the column's */
 	uint8_t		*u;		/* U in steps of q, in 8 x 8 tiles */
 	double		 q, inv_q;
 	double		(*sub)[3];	/* rows * COVER_SUB: sub-row middles
@@ -79,11 +82,11 @@ void	cover_free(struct cover *);
 int32_t	cover_col(const struct cover *, double phi);
 
 /*
- * Cell (k, j)'s angles: its start *phi0, the cosine and sine of its
- * middle; returns its width.
+ * The directions (cosine, sine) of cell (k, j)'s middle meridian and
+ * of its COVER_SUB sub-columns' middles, in order of angle.
  */
-double	cover_span(const struct cover *, int32_t k, int32_t j, double *phi0,
-	    double mid[2]);
+void	cover_dirs(const struct cover *, int32_t k, int32_t j, double mid[2],
+	    double sub[COVER_SUB][2]);
 
 /* The row holding t. */
 int32_t	cover_row(const struct cover *, double t);
