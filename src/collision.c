@@ -431,16 +431,18 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 				double dx = x - near[i].x, dy = y - near[i].y,
 				    dz = p[1] - near[i].z;
 				double d2 = dx * dx + dy * dy + dz * dz;
-				double lim = worst + near[i].r - p[2];
+				double lim = worst + near[i].r - p[2], f;
 
 				/* This point cannot raise the worst: next. */
 				if (lim > 0 && d2 <= lim * lim) {
 					best = -HUGE_VAL;
 					break;
 				}
-				best = fmin(best, sqrt(d2) - near[i].r);
+				/* Not fmin() and fmax(): calls, here. */
+				f = sqrt(d2) - near[i].r;
+				best = f < best ? f : best;
 			}
-			worst = fmax(worst, best + p[2]);
+			worst = best + p[2] > worst ? best + p[2] : worst;
 			if (worst >= r)
 				return 0;
 		}
@@ -632,7 +634,7 @@ radius_at(const struct coll *C, struct expr_env *env, long long n,
 }
 
 static void
-coll_add(struct coll *C, double t, double c, double s, double r)
+coll_add(struct coll *C, double t, double phi, double c, double s, double r)
 {
 	double p[2];
 	struct prim *o;
@@ -654,13 +656,15 @@ coll_add(struct coll *C, double t, double c, double s, double r)
 	C->n++;
 	grid_insert(C, (int32_t)(C->n - 1));
 	if (!C->nocover)
-		cover_add(&C->cover, t, o->x, o->y, o->z, r);
+		cover_add(&C->cover, t, phi, o->x, o->y, o->z, r);
 }
 
 /* The organs: frames on the receptacle, the tangent away from the tip. */
 static void
 fill_result(const struct coll *C, double alpha, struct result *res)
 {
+	double tiny = 1e-12 * (C->cv.length + 1);	/* a speed of 0 */
+
 	result_init(res, C->n);
 	res->divergence = alpha;
 	for (size_t i = 0; i < C->n; i++) {
@@ -669,7 +673,7 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 		double p[2], d[2], rho, phi;
 
 		curve_eval(&C->cv, o->t, p, d);
-		if (hypot(d[0], d[1]) < 1e-12 * (C->cv.length + 1)) {
+		if (d[0] * d[0] + d[1] * d[1] < tiny * tiny) {
 			/* A cusp: the chord across it gives the direction. */
 			double a[2], b[2], e = 1e-6 * C->cv.tmax;
 
@@ -825,7 +829,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	C.pr = xcalloc_big(C.cap, sizeof(*C.pr));
 	C.next = xcalloc_big(C.cap, sizeof(*C.next));
 	grid_fit(&C, r);
-	coll_add(&C, 0, 1, 0, r);
+	coll_add(&C, 0, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {
 		double a = angle_mod360((double)n, alpha) * (M_PI / 180);
 		double c = cos(a), s = sin(a), t0 = 0, t;
@@ -839,7 +843,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 		    place_exact(&C, n, t0, a, c, s, r);
 		if (t > C.cv.tmax)
 			break;
-		coll_add(&C, t, c, s, r);
+		coll_add(&C, t, a, c, s, r);
 		if (model_progress != NULL && n % PROGRESS_EVERY == 0)
 			model_progress(n + 1, 0);
 	}

@@ -560,11 +560,12 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 }
 
 void
-cover_add(struct cover *cv, double t, double x, double y, double z, double r)
+cover_add(struct cover *cv, double t, double phi, double x, double y,
+    double z, double r)
 {
 	/* Rows as far as the bound can bring a cell under GROW r. */
 	int32_t kq = cover_row(cv, t), span, k0, k1, jphi;
-	double rows = ceil(GROW * r / cv->a), phi = atan2(y, x);
+	double rows = ceil(GROW * r / cv->a);
 	/*
 	 * The row's constants live here, not in *cv: the cells' writes
 	 * (bytes, which may alias anything) would have them read again
@@ -577,8 +578,6 @@ cover_add(struct cover *cv, double t, double x, double y, double z, double r)
 	span = rows < cv->rows ? (int32_t)rows : cv->rows;
 	k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
 	k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
-	if (phi < 0)
-		phi += 2 * M_PI;
 	jphi = cover_col(cv, phi);
 	for (int32_t k = k0; k <= k1; k++)
 		row_add(cv, &ra, k, jphi);

@@ -482,8 +482,10 @@ box_dist(const double b[4][2], const double q[2], double *near2,
 			if (b[i][k] > hi)
 				hi = b[i][k];
 		}
+		dn = fabs(q[k] - lo);
+		df = fabs(q[k] - hi);
+		df = dn > df ? dn : df;		/* fmax() is a call */
 		dn = q[k] < lo ? lo - q[k] : q[k] > hi ? q[k] - hi : 0;
-		df = fmax(fabs(q[k] - lo), fabs(q[k] - hi));
 		n2 += dn * dn;
 		f2 += df * df;
 	}
