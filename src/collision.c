@@ -420,7 +420,12 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 					nn++;
 				}
 			}
-	for (int sa = 0; sa < COVER_SUB; sa++) {
+	/*
+	 * Sub-rows from the top: the walk found the cell blocked from
+	 * below, so what is open in it is mostly towards the front, and
+	 * a proof that fails (half of them) fails there first.
+	 */
+	for (int sa = COVER_SUB - 1; sa >= 0; sa--) {
 		const double *p = cv->sub[k * COVER_SUB + sa];
 
 		for (int sb = 0; sb < COVER_SUB; sb++) {
