@@ -804,6 +804,9 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	free(pts);
 	if (radius_at(&C, &env, 0, N, &r, &eps) != 0)
 		goto out;
+	/* A constant radius is that for every primordium: no evaluating. */
+	if (C.rconst <= 0 && expr_is_constant(P->radius.e, &C.rconst))
+		C.rconst = r;
 	law_extent(&C, N, r, &rmin, &band);
 	if (rmin < R_SMALLEST * fmax(C.cv.length, C.cv.rho_max)) {
 		scene_error(sc, GIVEN_AT(P, CO_RADIUS), "collision.radius "
