@@ -527,7 +527,8 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 	 * for the small x of most rows and without asin().
 	 */
 	wf = m > lim ? sqrt(lim / (m - lim)) / M_PI * ncol + 0.5 : ncol;
-	w = wf < ncol ? (int32_t)ceil(wf) : ncol;
+	/* Rounded up; ceil() is a call. */
+	w = wf < ncol ? (int32_t)wf + ((int32_t)wf < wf) : ncol;
 	/*
 	 * Columns jc - w .. jc + w round the ring: at most two runs of
 	 * columns in order, a cell's place one step on from the last's.
@@ -645,7 +646,8 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	if (cv->f[j] * cv->q >= r)
 		column_reset(cv, j);
 	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t))
-		k = cover_row(cv, *t);
+		/* Most walks start at the base: search up from it. */
+		k = *t >= cv->t_row[0] ? row_from(cv, *t, 0) : 0;
 	else if (k + 1 < cv->rows && !(*t < cv->t_row[k + 1]))
 		k = row_from(cv, *t, k);
 	*row = k;
