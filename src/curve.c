@@ -63,6 +63,21 @@ piece_eval(const struct piece *p, double u, double x[2], double d[2])
 	}
 }
 
+/* The box of control points b: least and largest of each coordinate. */
+static void
+bez_box(const double b[4][2], double box[2][2])
+{
+	for (int k = 0; k < 2; k++) {
+		box[k][0] = box[k][1] = b[0][k];
+		for (int i = 1; i < 4; i++) {
+			if (b[i][k] < box[k][0])
+				box[k][0] = b[i][k];
+			if (b[i][k] > box[k][1])
+				box[k][1] = b[i][k];
+		}
+	}
+}
+
 /* Split b at u: the part before into lo, after into hi (either NULL). */
 static void
 bez_split(const double b[4][2], double u, double lo[4][2], double hi[4][2])
@@ -242,6 +257,7 @@ curve_init(struct curve *cv, const double (*pts)[2], int npts)
 			    p->b);
 			to_power(p);
 			p->kappa = convex_radius((const double (*)[2])p->b);
+			bez_box((const double (*)[2])p->b, p->box);
 			p->t0 = k + u0;
 			p->t1 = k + u1;
 			cv->t0[cv->npc - 1] = p->t0;
@@ -466,22 +482,16 @@ curve_t_area(const struct curve *cv, double a, size_t *hint, double p[2],
 	return pc->t0 + u * (pc->t1 - pc->t0);
 }
 
-/* Nearest and farthest squared distance from q to the box of b. */
+/* Nearest and farthest squared distance from q to a box. */
 static void
-box_dist(const double b[4][2], const double q[2], double *near2,
+box_dist(const double box[2][2], const double q[2], double *near2,
     double *far2)
 {
 	double n2 = 0, f2 = 0;
 
 	for (int k = 0; k < 2; k++) {
-		double lo = b[0][k], hi = b[0][k], dn, df;
+		double lo = box[k][0], hi = box[k][1], dn, df;
 
-		for (int i = 1; i < 4; i++) {
-			if (b[i][k] < lo)
-				lo = b[i][k];
-			if (b[i][k] > hi)
-				hi = b[i][k];
-		}
 		dn = fabs(q[k] - lo);
 		df = fabs(q[k] - hi);
 		df = dn > df ? dn : df;		/* fmax() is a call */
@@ -631,15 +641,21 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 /*
  * The first u in [u0, u1] at which piece p is free; -1: none.  b holds
  * the control points of that part of p, or of a larger part when the
- * piece is convex for this disk anyway (only its box is used then).
+ * piece is convex for this disk anyway (only its box is used then);
+ * box is b's box if known, else NULL.
  */
 static double
-exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
-    const double q[2], double S2, double kappa)
+exit_sub(const struct piece *p, const double b[4][2],
+    const double (*box)[2], double u0, double u1, const double q[2],
+    double S2, double kappa)
 {
-	double near2, far2, fp, k, half[2][4][2], mid;
+	double near2, far2, fp, k, half[2][4][2], mid, own[2][2];
 
-	box_dist(b, q, &near2, &far2);
+	if (box == NULL) {
+		bez_box(b, own);
+		box = (const double (*)[2])own;
+	}
+	box_dist(box, q, &near2, &far2);
 	if (near2 >= S2)
 		return u0;
 	if (far2 < S2)
@@ -657,10 +673,11 @@ exit_sub(const struct piece *p, const double b[4][2], double u0, double u1,
 	if (mid <= u0 || mid >= u1)	/* as small as doubles go */
 		return gap(p, u1, q, S2, &fp) >= 0 ? u1 : -1;
 	bez_split(b, 0.5, half[0], half[1]);
-	if ((k = exit_sub(p, (const double (*)[2])half[0], u0, mid, q,
+	if ((k = exit_sub(p, (const double (*)[2])half[0], NULL, u0, mid, q,
 	    S2, 0)) >= 0)
 		return k;
-	return exit_sub(p, (const double (*)[2])half[1], mid, u1, q, S2, 0);
+	return exit_sub(p, (const double (*)[2])half[1], NULL, mid, u1, q,
+	    S2, 0);
 }
 
 double
@@ -672,6 +689,7 @@ curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 	for (; i < cv->npc; i++, u = 0) {
 		const struct piece *p = &cv->pc[i];
 		const double (*b)[2] = (const double (*)[2])p->b;
+		const double (*box)[2] = (const double (*)[2])p->box;
 		double e, near2, far2;
 
 		/*
@@ -680,13 +698,14 @@ curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 		 * disk is small beside the piece), that box will do.
 		 */
 		if (u > 0) {
-			box_dist(b, q, &near2, &far2);
+			box_dist(box, q, &near2, &far2);
 			if (!(far2 < p->kappa * p->kappa)) {
 				bez_sub(b, u, 1, part);
 				b = (const double (*)[2])part;
+				box = NULL;
 			}
 		}
-		if ((e = exit_sub(p, b, u, 1, q, S2, p->kappa)) >= 0)
+		if ((e = exit_sub(p, b, box, u, 1, q, S2, p->kappa)) >= 0)
 			return p->t0 + e * (p->t1 - p->t0);
 	}
 	return HUGE_VAL;

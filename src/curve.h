@@ -18,6 +18,8 @@ struct piece {
 	double	 da[2];		/* d(area)/du at u = 0 and u = 1 */
 	double	 kappa;		/* g(u) = |p(u) - q|^2 is convex on the
 				   piece for |p - q| < kappa */
+	double	 box[2][2];	/* its control points' least and largest
+				   radius, then height */
 };
 
 /*
