@@ -103,6 +103,8 @@ struct coll {
 	int32_t		*next;		/* per primordium: next in its cell */
 	struct cover	 cover;
 	int		 nocover;	/* walk without the cover map */
+	int		 check;		/* test what refine() proves */
+	long long	 refined, refine_misses;
 	double		*law;		/* the radius law sampled, or NULL */
 	long long	 law_step;	/* every law_step primordia */
 	size_t		 nlaw;
@@ -367,6 +369,35 @@ surface_within(const struct prim *o, const double p[3], double U)
 	    1e-15;
 }
 
+static int	near_point(void *, const double p[3], double U);
+
+/*
+ * For the tests: at 9 x 9 points over cell (k, j), its edges and
+ * corners too, does a primordium come within U, the bound refine()
+ * proved?  Returns the points where none does.
+ */
+static long long
+refine_check(struct coll *C, int32_t k, int32_t j, double U)
+{
+	const struct cover *cv = &C->cover;
+	double phi0, dphi = cover_angles(cv, k, j, &phi0);
+	double t0 = cv->t_row[k], t1 = fmin(cv->t_row[k + 1], C->cv.tmax);
+	long long misses = 0;
+
+	for (int a = 0; a <= 8; a++) {
+		double q[2];
+
+		curve_eval(&C->cv, t0 + (t1 - t0) * a / 8, q, NULL);
+		for (int b = 0; b <= 8; b++) {
+			double phi = phi0 + dphi * b / 8;
+			double p[3] = { q[0] * cos(phi), q[0] * sin(phi), q[1] };
+
+			misses += !near_point(C, p, U);
+		}
+	}
+	return misses;
+}
+
 /*
  * Try to prove cell (k, j) covered after all: a cell the walk found
  * blocked along its meridian but that cover_add's one bound per cell
@@ -451,6 +482,10 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 			if (worst >= r)
 				return 0;
 		}
+	}
+	if (C->check) {
+		C->refined++;
+		C->refine_misses += refine_check(C, k, j, worst);
 	}
 	cover_lower(&C->cover, k, j, worst);
 	return 1;
@@ -773,7 +808,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	const struct collision *P = sc->params;
 	struct coll C = { .sc = sc, .p = P, .nocover = how == PLACE_PLAIN ||
-	    how == PLACE_BRUTE,
+	    how == PLACE_BRUTE, .check = how == PLACE_CHECK,
 	    .rconst = rconst };
 	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
@@ -865,9 +900,12 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	fill_result(&C, alpha, res);
 	result_info(res, "primordia", 1, (double)C.n);
 	result_info(res, "receptacle", 2, C.cv.length, C.cv.rho_max);
-	if (how == PLACE_CHECK)
+	if (how == PLACE_CHECK) {
+		result_info(res, "refine misses", 2, (double)C.refine_misses,
+		    (double)C.refined);
 		result_info(res, "cover misses", 1, (double)cover_check(&C.cover,
 		    &C.cv, C.rmax, CHECK_EVERY, near_point, &C));
+	}
 	rc = 0;
 out:
 	cover_free(&C.cover);

@@ -289,6 +289,15 @@ cover_col(const struct cover *cv, double phi)
 	return j < 0 ? 0 : j >= cv->cols ? cv->cols - 1 : j;
 }
 
+double
+cover_angles(const struct cover *cv, int32_t k, int32_t j, double *phi0)
+{
+	int32_t ncol = cv->cols >> cv->bz[k >> 3];
+
+	*phi0 = (j >> cv->bz[k >> 3]) * 2 * M_PI / ncol;
+	return 2 * M_PI / ncol;
+}
+
 void
 cover_dirs(const struct cover *cv, int32_t k, int32_t j, double mid[2],
     double sub[COVER_SUB][2])

@@ -81,6 +81,10 @@ void	cover_free(struct cover *);
 /* The column of angle phi (radians, [0, 2 pi)), in the widest rows. */
 int32_t	cover_col(const struct cover *, double phi);
 
+/* Cell (k, j)'s first angle about the axis, *phi0; returns its width. */
+double	cover_angles(const struct cover *, int32_t k, int32_t j,
+	    double *phi0);
+
 /*
  * The directions (cosine, sine) of cell (k, j)'s middle meridian and
  * of its COVER_SUB sub-columns' middles, in order of angle.
