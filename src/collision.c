@@ -810,7 +810,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	struct coll C = { .sc = sc, .p = P, .nocover = how == PLACE_PLAIN ||
 	    how == PLACE_BRUTE, .check = how == PLACE_CHECK,
 	    .rconst = rconst };
-	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band;
+	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band, k;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
 
@@ -840,7 +840,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	if (radius_at(&C, &env, 0, N, &r, &eps) != 0)
 		goto out;
 	/* A constant radius is that for every primordium: no evaluating. */
-	if (C.rconst <= 0 && expr_is_constant(P->radius.e, &C.rconst))
+	if (C.rconst <= 0 && expr_is_constant(P->radius.e, &k))
 		C.rconst = r;
 	law_extent(&C, N, r, &rmin, &band);
 	if (rmin < R_SMALLEST * fmax(C.cv.length, C.cv.rho_max)) {
