@@ -292,9 +292,10 @@ cover_col(const struct cover *cv, double phi)
 double
 cover_angles(const struct cover *cv, int32_t k, int32_t j, double *phi0)
 {
-	int32_t ncol = cv->cols >> cv->bz[k >> 3];
+	int z = cv->bz[k >> 3];
+	int32_t ncol = cv->cols >> z;
 
-	*phi0 = (j >> cv->bz[k >> 3]) * 2 * M_PI / ncol;
+	*phi0 = (j >> z) * 2 * M_PI / ncol;
 	return 2 * M_PI / ncol;
 }
 
@@ -506,7 +507,7 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 	/* Within this of the middle, the simple bound is under tight. */
 	double near = cv->tight + ra->r - cv->d[k];
 	int zk = cv->bz[k >> 3];
-	int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, run[2][2];
+	int32_t ncol = cv->cols >> zk, jc = jphi >> zk, w, lo, hi, run[2][2];
 	/* The row's cells, as cell_z() finds them. */
 	uint8_t *tiles = &cv->u[cv->bbase[k >> 3] * 64 + (size_t)(k & 7)];
 	size_t stride = (size_t)cv->bstride[k >> 3] * 64;
@@ -542,23 +543,22 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 	 * Columns jc - w .. jc + w round the ring: at most two runs of
 	 * columns in order, a cell's place one step on from the last's.
 	 */
+	lo = jc - w;
+	hi = jc + w;
 	if (2 * w + 1 >= ncol) {	/* the whole ring, once */
-		run[nrun][0] = 0;
+		lo = 0;
+		hi = ncol - 1;
+	} else if (lo < 0) {		/* the part before 0, from the end */
+		run[nrun][0] = lo + ncol;
 		run[nrun++][1] = ncol - 1;
-	} else if (jc - w < 0) {
-		run[nrun][0] = jc - w + ncol;
-		run[nrun++][1] = ncol - 1;
+		lo = 0;
+	} else if (hi >= ncol) {	/* the part past the end, from 0 */
 		run[nrun][0] = 0;
-		run[nrun++][1] = jc + w;
-	} else if (jc + w >= ncol) {
-		run[nrun][0] = 0;
-		run[nrun++][1] = jc + w - ncol;
-		run[nrun][0] = jc - w;
-		run[nrun++][1] = ncol - 1;
-	} else {
-		run[nrun][0] = jc - w;
-		run[nrun++][1] = jc + w;
+		run[nrun++][1] = hi - ncol;
+		hi = ncol - 1;
 	}
+	run[nrun][0] = lo;
+	run[nrun++][1] = hi;
 	for (int i = 0; i < nrun; i++) {
 		int32_t j = run[i][0];
 		uint8_t *up = tiles + (size_t)(j >> 3) * stride + (size_t)((j &

@@ -22,7 +22,8 @@ struct cover {
 	double		 tight;		/* bounds above this get a closer look;
 					   under it a cell is covered for
 					   every radius, for good */
-	uint8_t		 final;		/* the bounds in steps that are */
+	uint8_t		 final;		/* steps 0 .. final - 1 are such
+					   bounds */
 	int32_t		 rows, cols;
 	double		*t_row;		/* rows + 1: t at each row's start,
 					   then the band's end */

@@ -490,12 +490,11 @@ box_dist(const double box[2][2], const double q[2], double *near2,
 	double n2 = 0, f2 = 0;
 
 	for (int k = 0; k < 2; k++) {
-		double lo = box[k][0], hi = box[k][1], dn, df;
+		double lo = box[k][0], hi = box[k][1];
+		double a = fabs(q[k] - lo), b = fabs(q[k] - hi);
+		double dn = q[k] < lo ? lo - q[k] : q[k] > hi ? q[k] - hi : 0;
+		double df = a > b ? a : b;	/* fmax() is a call */
 
-		dn = fabs(q[k] - lo);
-		df = fabs(q[k] - hi);
-		df = dn > df ? dn : df;		/* fmax() is a call */
-		dn = q[k] < lo ? lo - q[k] : q[k] > hi ? q[k] - hi : 0;
 		n2 += dn * dn;
 		f2 += df * df;
 	}

@@ -467,16 +467,18 @@ minimise(const struct field *F, double a, double b, double x, double *emin)
 		 * ones: halving took 40 sums to reach it); then between the
 		 * ends where E' changes sign, by its chord (regula falsi).
 		 */
-		if (!newton && e[1] < 0 && b == ends[1] && !tried[1]) {
-			nx = b;
-			tried[1] = 1;
-		} else if (!newton && e[1] > 0 && a == ends[0] && !tried[0]) {
-			nx = a;
-			tried[0] = 1;
-		} else if (!newton) {
-			nx = (a * d[1] - b * d[0]) / (d[1] - d[0]);
-			if (!(d[0] < 0 && d[1] > 0 && nx > a && nx < b))
-				nx = (a + b) / 2;
+		if (!newton) {
+			if (e[1] < 0 && b == ends[1] && !tried[1]) {
+				nx = b;
+				tried[1] = 1;
+			} else if (e[1] > 0 && a == ends[0] && !tried[0]) {
+				nx = a;
+				tried[0] = 1;
+			} else {
+				nx = (a * d[1] - b * d[0]) / (d[1] - d[0]);
+				if (!(d[0] < 0 && d[1] > 0 && nx > a && nx < b))
+					nx = (a + b) / 2;
+			}
 		}
 		step = nx - x;
 		/*
