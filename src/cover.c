@@ -632,6 +632,26 @@ move_to(const struct cover *cv, double *t, int32_t *row, int32_t k)
 	return 1;
 }
 
+/*
+ * Eight bounds read as one word: are all of them under L (1 .. 256)?
+ * Each byte gets a 16-bit lane of its own and 256 - L added (lanes(L)),
+ * so a byte of L or more, and only such, carries into its lane's bit 8.
+ * The order of the bytes in the word does not matter.
+ */
+static inline uint64_t
+lanes(unsigned L)
+{
+	return (uint64_t)(256 - L) * 0x0001000100010001u;
+}
+
+static inline int
+all_below(uint64_t x, uint64_t add)
+{
+	const uint64_t lo = 0x00FF00FF00FF00FFu, carry = 0x0100010001000100u;
+
+	return ((((x & lo) + add) | (((x >> 8) & lo) + add)) & carry) == 0;
+}
+
 /* Column j's prefix grows by n rows, the largest bound among them most. */
 static void
 prefix_grow(struct cover *cv, int32_t j, int32_t n, uint8_t most)
@@ -647,6 +667,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	/* Walks mostly step a row at a time: try the next row first. */
 	int32_t k = *row, h, e;
 	uint8_t lim, most = 0;
+	uint64_t below_lim, below_most;
 
 	if (cv->band && *t >= cv->t_row[cv->rows]) {
 		*row = -1;	/* unmapped: the walk goes on alone */
@@ -675,11 +696,34 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		cv->lim_r = r;
 	}
 	lim = cv->lim;
+	below_lim = lanes(lim);
+	below_most = lanes(1);
 	for (e = k; e < cv->rows; ) {
 		const uint8_t *run = cell(cv, e & ~7, j);
 		int i = e & 7, end = cv->rows - (e & ~7) < 8 ?
 		    cv->rows - (e & ~7) : 8;
 
+		/*
+		 * A tile's eight rows at once where all are covered (a reset
+		 * column's long scan is mostly such), and the largest bound
+		 * worked out only where one of them exceeds the largest yet.
+		 */
+		if (i == 0 && end == 8) {
+			uint64_t x;
+
+			memcpy(&x, run, sizeof(x));
+			if (all_below(x, below_most)) {
+				e += 8;
+				continue;
+			}
+			if (all_below(x, below_lim)) {
+				for (int b = 0; b < 8; b++)
+					most = run[b] > most ? run[b] : most;
+				below_most = lanes(most + 1);
+				e += 8;
+				continue;
+			}
+		}
 		for (; i < end && run[i] < lim; i++)
 			most = run[i] > most ? run[i] : most;
 		e = (e & ~7) + i;
