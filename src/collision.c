@@ -97,6 +97,7 @@ struct coll {
 	size_t		 n, cap;
 	double		 rmax;		/* largest radius placed */
 	double		 g, inv_g;	/* grid cell size, its inverse */
+	double		 reach;		/* the area placing may cover */
 	struct slot	*slot;
 	uint32_t	 mask;
 	size_t		 used;
@@ -790,13 +791,20 @@ law_extent(struct coll *C, long long N, double r0, double *rmin,
 static void
 grid_fit(struct coll *C, double r)
 {
-	double g = fmax(8 * r, r + C->rmax);
+	double g = fmax(8 * r, r + C->rmax), cells;
 
 	if (C->slot != NULL && g <= 2 * C->g && g >= C->g / 2)
 		return;
 	C->g = g;
 	C->inv_g = 1 / g;
-	grid_build(C, 2 * C->used);
+	/*
+	 * Room from the start for the cells that the area the primordia
+	 * can cover will fill (a surface crosses about 1.5 cubes of side
+	 * g per g^2), at most one a primordium: on the dome the table
+	 * otherwise doubled eight times, rehashing all it held each time.
+	 */
+	cells = fmin(1.5 * C->reach / (g * g), (double)C->cap);
+	grid_build(C, (size_t)fmax(2 * (double)C->used, 2 * cells));
 }
 
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
@@ -871,6 +879,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	    1.1 + 4096);
 	C.pr = xcalloc_big(C.cap, sizeof(*C.pr));
 	C.next = xcalloc_big(C.cap, sizeof(*C.next));
+	C.reach = fmin(band, C.cv.area);
 	grid_fit(&C, r);
 	coll_add(&C, 0, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {
