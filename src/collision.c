@@ -798,13 +798,17 @@ grid_fit(struct coll *C, double r)
 	C->g = g;
 	C->inv_g = 1 / g;
 	/*
-	 * Room from the start for the cells that the area the primordia
-	 * can cover will fill (a surface crosses about 1.5 cubes of side
-	 * g per g^2), at most one a primordium: on the dome the table
+	 * The first table has room for the cells that the area the
+	 * primordia can cover will fill (a surface crosses about 1.5 cubes
+	 * of side g per g^2), at most one a primordium: on the dome it
 	 * otherwise doubled eight times, rehashing all it held each time.
+	 * A table rebuilt for new radii starts from the cells in use, and
+	 * grows as it must: sized for all the area at the new g, it held
+	 * the falling laws' peak 10% higher.
 	 */
-	cells = fmin(1.5 * C->reach / (g * g), (double)C->cap);
-	grid_build(C, (size_t)fmax(2 * (double)C->used, 2 * cells));
+	cells = C->slot == NULL ? fmin(1.5 * C->reach / (g * g),
+	    (double)C->cap) : (double)C->used;
+	grid_build(C, (size_t)(2 * cells));
 }
 
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
