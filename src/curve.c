@@ -558,17 +558,27 @@ convex_radius(const double b[4][2])
 	return m2 > 0 ? m1 / m2 : HUGE_VAL;
 }
 
+/*
+ * At u: g(u) - S2, with g(u) = |p(u) - q|^2, half its slope (p - q).p'
+ * and |p'|^2, which the tangent's exit from the disk needs.  Kept, so
+ * that no point is evaluated twice.
+ */
+struct gap {
+	double	 f, half, dd;
+};
+
 static inline double
 gap(const struct piece *p, double u, const double q[2], double S2,
-    double *slope)
+    struct gap *g)
 {
 	double x[2], d[2];
 
 	piece_eval(p, u, x, d);
 	x[0] -= q[0];
 	x[1] -= q[1];
-	*slope = 2 * (x[0] * d[0] + x[1] * d[1]);
-	return x[0] * x[0] + x[1] * x[1] - S2;
+	g->half = x[0] * d[0] + x[1] * d[1];
+	g->dd = d[0] * d[0] + d[1] * d[1];
+	return g->f = x[0] * x[0] + x[1] * x[1] - S2;
 }
 
 /*
@@ -585,17 +595,13 @@ gap(const struct piece *p, double u, const double q[2], double S2,
 
 static double
 crossing(const struct piece *p, double lo, double hi, const double q[2],
-    double S2)
+    double S2, const struct gap *at_lo, const struct gap *at_hi)
 {
-	double x[2], d[2], a, b, c, disc, fh, fph, f, fp, top = hi;
+	double a = at_lo->dd, b = at_lo->half, disc, top = hi;
+	struct gap h = *at_hi, g;
+	int known = 1;		/* h is g at hi */
 
-	piece_eval(p, lo, x, d);
-	x[0] -= q[0];
-	x[1] -= q[1];
-	a = d[0] * d[0] + d[1] * d[1];
-	b = x[0] * d[0] + x[1] * d[1];
-	c = x[0] * x[0] + x[1] * x[1] - S2;
-	disc = b * b - a * c;
+	disc = b * b - a * at_lo->f;
 	if (a > 0 && disc >= 0) {
 		double guess = lo + (-b + sqrt(disc)) / a;
 
@@ -604,34 +610,39 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 			 * Still inside, but rising: a convex function lies
 			 * above its tangent, so the tangent's zero is free.
 			 */
-			if ((f = gap(p, guess, q, S2, &fp)) >= 0)
+			if (gap(p, guess, q, S2, &g) >= 0) {
 				hi = guess;
-			else if (fp > 0) {
+				h = g;
+			} else if (g.half > 0) {
 				lo = guess;
-				if (guess - f / fp < hi)
-					hi = guess - f / fp;
+				if (guess - g.f / (2 * g.half) < hi) {
+					hi = guess - g.f / (2 * g.half);
+					known = 0;
+				}
 			}
 		}
 	}
-	if ((fh = gap(p, hi, q, S2, &fph)) < 0) {
+	if (!known)
+		gap(p, hi, q, S2, &h);
+	if (h.f < 0) {
 		/* Rounding put the guess inside: back to the known end. */
 		lo = hi;
 		hi = top;
-		fh = gap(p, hi, q, S2, &fph);
+		h = *at_hi;
 	}
 	for (int i = 0; i < 100 && hi - lo > U_EPS; i++) {
-		double step = fph > 0 ? fh / fph : HUGE_VAL, nu = hi - step;
+		double fph = 2 * h.half;
+		double step = fph > 0 ? h.f / fph : HUGE_VAL, nu = hi - step;
 
 		if (step <= U_EPS)
 			break;
 		if (!(nu > lo))
 			nu = lo + (hi - lo) / 2;
-		if ((f = gap(p, nu, q, S2, &fp)) < 0)
+		if (gap(p, nu, q, S2, &g) < 0)
 			lo = nu;
 		else {
 			hi = nu;
-			fh = f;
-			fph = fp;
+			h = g;
 		}
 	}
 	return hi;
@@ -641,42 +652,53 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
  * The first u in [u0, u1] at which piece p is free; -1: none.  b holds
  * the control points of that part of p, or of a larger part when the
  * piece is convex for this disk anyway (only its box is used then);
- * box is b's box if known, else NULL.
+ * near2 and far2 are the squared distances from q to b's box, least
+ * and most.
  */
-static double
-exit_sub(const struct piece *p, const double b[4][2],
-    const double (*box)[2], double u0, double u1, const double q[2],
-    double S2, double kappa)
-{
-	double near2, far2, fp, k, half[2][4][2], mid, own[2][2];
+static double	exit_part(const struct piece *, const double b[4][2], double,
+		    double, const double q[2], double, double);
 
-	if (box == NULL) {
-		bez_box(b, own);
-		box = (const double (*)[2])own;
-	}
-	box_dist(box, q, &near2, &far2);
+static double
+exit_sub(const struct piece *p, const double b[4][2], double near2,
+    double far2, double u0, double u1, const double q[2], double S2,
+    double kappa)
+{
+	double k, half[2][4][2], mid;
+	struct gap lo, hi;
+
 	if (near2 >= S2)
 		return u0;
 	if (far2 < S2)
 		return -1;
-	if (gap(p, u0, q, S2, &fp) >= 0)
+	if (gap(p, u0, q, S2, &lo) >= 0)
 		return u0;
 	/* A part of a convex piece is convex: no need to look again. */
 	k = far2 < kappa * kappa ? kappa : convex_radius(b);
 	if (far2 < k * k) {
-		if (gap(p, u1, q, S2, &fp) < 0)
+		if (gap(p, u1, q, S2, &hi) < 0)
 			return -1;
-		return crossing(p, u0, u1, q, S2);
+		return crossing(p, u0, u1, q, S2, &lo, &hi);
 	}
 	mid = (u0 + u1) / 2;
 	if (mid <= u0 || mid >= u1)	/* as small as doubles go */
-		return gap(p, u1, q, S2, &fp) >= 0 ? u1 : -1;
+		return gap(p, u1, q, S2, &hi) >= 0 ? u1 : -1;
 	bez_split(b, 0.5, half[0], half[1]);
-	if ((k = exit_sub(p, (const double (*)[2])half[0], NULL, u0, mid, q,
-	    S2, 0)) >= 0)
+	if ((k = exit_part(p, (const double (*)[2])half[0], u0, mid, q, S2,
+	    0)) >= 0)
 		return k;
-	return exit_sub(p, (const double (*)[2])half[1], NULL, mid, u1, q,
-	    S2, 0);
+	return exit_part(p, (const double (*)[2])half[1], mid, u1, q, S2, 0);
+}
+
+/* exit_sub() of a part of p, by its own box. */
+static double
+exit_part(const struct piece *p, const double b[4][2], double u0,
+    double u1, const double q[2], double S2, double kappa)
+{
+	double box[2][2], near2, far2;
+
+	bez_box(b, box);
+	box_dist((const double (*)[2])box, q, &near2, &far2);
+	return exit_sub(p, b, near2, far2, u0, u1, q, S2, kappa);
 }
 
 double
@@ -687,24 +709,22 @@ curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 
 	for (; i < cv->npc; i++, u = 0) {
 		const struct piece *p = &cv->pc[i];
-		const double (*b)[2] = (const double (*)[2])p->b;
-		const double (*box)[2] = (const double (*)[2])p->box;
 		double e, near2, far2;
 
 		/*
-		 * The part from u on, for its box; but where the piece is
-		 * convex for this disk even by its whole box (mostly: the
+		 * The part from u on, by its own box; but where the piece
+		 * is convex for this disk even by its whole box (mostly: the
 		 * disk is small beside the piece), that box will do.
 		 */
-		if (u > 0) {
-			box_dist(box, q, &near2, &far2);
-			if (!(far2 < p->kappa * p->kappa)) {
-				bez_sub(b, u, 1, part);
-				b = (const double (*)[2])part;
-				box = NULL;
-			}
-		}
-		if ((e = exit_sub(p, b, box, u, 1, q, S2, p->kappa)) >= 0)
+		box_dist((const double (*)[2])p->box, q, &near2, &far2);
+		if (u > 0 && !(far2 < p->kappa * p->kappa)) {
+			bez_sub((const double (*)[2])p->b, u, 1, part);
+			e = exit_part(p, (const double (*)[2])part, u, 1, q, S2,
+			    p->kappa);
+		} else
+			e = exit_sub(p, (const double (*)[2])p->b, near2, far2, u,
+			    1, q, S2, p->kappa);
+		if (e >= 0)
 			return p->t0 + e * (p->t1 - p->t0);
 	}
 	return HUGE_VAL;
