@@ -103,6 +103,8 @@ struct coll {
 	size_t		 used;
 	int32_t		*next;		/* per primordium: next in its cell */
 	struct cover	 cover;
+	int32_t		 row;		/* the cover row of the last free t
+					   found, or -1 */
 	int		 nocover;	/* walk without the cover map */
 	int		 check;		/* test what refine() proves */
 	long long	 refined, refine_misses;
@@ -551,8 +553,10 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 	while (t <= C->cv.tmax) {
 		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k))
 			continue;
-		if (free_at(C, t, c, s, r, &to))
+		if (free_at(C, t, c, s, r, &to)) {
+			C->row = k;	/* cover_skip() has just found it */
 			return t;
+		}
 		/* Blocked across a cell that holds up the column's prefix. */
 		if (!C->nocover && k == C->cover.head[j] &&
 		    to >= C->cover.t_row[k + 1]) {
@@ -697,7 +701,8 @@ coll_add(struct coll *C, double t, double phi, double c, double s, double r)
 	C->n++;
 	grid_insert(C, (int32_t)(C->n - 1));
 	if (!C->nocover)
-		cover_add(&C->cover, t, phi, o->x, o->y, o->z, r);
+		cover_add(&C->cover, t, C->row, phi, o->x, o->y, o->z, r);
+	C->row = -1;
 }
 
 /* The organs: frames on the receptacle, the tangent away from the tip. */
@@ -821,7 +826,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	const struct collision *P = sc->params;
 	struct coll C = { .sc = sc, .p = P, .nocover = how == PLACE_PLAIN ||
 	    how == PLACE_BRUTE, .check = how == PLACE_CHECK,
-	    .rconst = rconst };
+	    .rconst = rconst, .row = -1 };
 	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band, k;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;

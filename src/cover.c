@@ -570,11 +570,11 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 }
 
 void
-cover_add(struct cover *cv, double t, double phi, double x, double y,
-    double z, double r)
+cover_add(struct cover *cv, double t, int32_t row, double phi, double x,
+    double y, double z, double r)
 {
 	/* Rows as far as the bound can bring a cell under GROW r. */
-	int32_t kq = cover_row(cv, t), span, k0, k1, jphi;
+	int32_t kq = row >= 0 ? row : cover_row(cv, t), span, k0, k1, jphi;
 	double rows = ceil(GROW * r / cv->a);
 	/*
 	 * The row's constants live here, not in *cv: the cells' writes

@@ -97,11 +97,11 @@ void	cover_dirs(const struct cover *, int32_t k, int32_t j, double mid[2],
 int32_t	cover_row(const struct cover *, double t);
 
 /*
- * Record primordium (x, y, z) of radius r at curve parameter t, at
- * angle phi about the axis (radians, [0, 2 pi)).
+ * Record primordium (x, y, z) of radius r at curve parameter t, in row
+ * row (-1: not known), at angle phi about the axis (radians, [0, 2 pi)).
  */
-void	cover_add(struct cover *, double t, double phi, double x, double y,
-	    double z, double r);
+void	cover_add(struct cover *, double t, int32_t row, double phi, double x,
+	    double y, double z, double r);
 
 /* Lower cell (k, j)'s bound to U if that is lower. */
 void	cover_lower(struct cover *, int32_t k, int32_t j, double U);
