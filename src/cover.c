@@ -633,10 +633,11 @@ move_to(const struct cover *cv, double *t, int32_t *row, int32_t k)
 }
 
 /*
- * Eight bounds read as one word: are all of them under L (1 .. 256)?
+ * Eight bounds read as one word: are all of them under L (0 .. 256)?
  * Each byte gets a 16-bit lane of its own and 256 - L added (lanes(L)),
- * so a byte of L or more, and only such, carries into its lane's bit 8.
- * The order of the bytes in the word does not matter.
+ * so a byte of L or more, and only such, carries into its lane's bit 8
+ * (at most 511: no lane spills into the next).  The order of the bytes
+ * in the word does not matter.
  */
 static inline uint64_t
 lanes(unsigned L)
