@@ -103,8 +103,6 @@ struct coll {
 	size_t		 used;
 	int32_t		*next;		/* per primordium: next in its cell */
 	struct cover	 cover;
-	int32_t		 row;		/* the cover row of the last free t
-					   found, or -1 */
 	int		 nocover;	/* walk without the cover map */
 	int		 check;		/* test what refine() proves */
 	long long	 refined, refine_misses;
@@ -542,10 +540,13 @@ refine_pays(const struct coll *C, long long n, long long period, double r)
 	return C->law[i < C->nlaw ? i : C->nlaw - 1] >= (1 - REFINE_FALL) * r;
 }
 
-/* The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none. */
+/*
+ * The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none.
+ * *row is t's row of the cover map, if the walk found it, else -1.
+ */
 static double
 place_exact(struct coll *C, long long n, double t0, double phi, double c,
-    double s, double r)
+    double s, double r, int32_t *row)
 {
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
 	double t = t0, to;
@@ -554,7 +555,7 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k))
 			continue;
 		if (free_at(C, t, c, s, r, &to)) {
-			C->row = k;	/* cover_skip() has just found it */
+			*row = k;	/* cover_skip() has just found it */
 			return t;
 		}
 		/* Blocked across a cell that holds up the column's prefix. */
@@ -678,8 +679,10 @@ radius_at(const struct coll *C, struct expr_env *env, long long n,
 	return 0;
 }
 
+/* Primordium n at t, row (-1: not known) of the cover map, angle phi. */
 static void
-coll_add(struct coll *C, double t, double phi, double c, double s, double r)
+coll_add(struct coll *C, double t, int32_t row, double phi, double c,
+    double s, double r)
 {
 	double p[2];
 	struct prim *o;
@@ -701,8 +704,7 @@ coll_add(struct coll *C, double t, double phi, double c, double s, double r)
 	C->n++;
 	grid_insert(C, (int32_t)(C->n - 1));
 	if (!C->nocover)
-		cover_add(&C->cover, t, C->row, phi, o->x, o->y, o->z, r);
-	C->row = -1;
+		cover_add(&C->cover, t, row, phi, o->x, o->y, o->z, r);
 }
 
 /* The organs: frames on the receptacle, the tangent away from the tip. */
@@ -826,7 +828,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	const struct collision *P = sc->params;
 	struct coll C = { .sc = sc, .p = P, .nocover = how == PLACE_PLAIN ||
 	    how == PLACE_BRUTE, .check = how == PLACE_CHECK,
-	    .rconst = rconst, .row = -1 };
+	    .rconst = rconst };
 	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band, k;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
@@ -890,10 +892,11 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	C.next = xcalloc_big(C.cap, sizeof(*C.next));
 	C.reach = fmin(band, C.cv.area);
 	grid_fit(&C, r);
-	coll_add(&C, 0, 0, 1, 0, r);
+	coll_add(&C, 0, -1, 0, 1, 0, r);
 	for (long long n = 1; n < N; n++) {
 		double a = angle_mod360((double)n, alpha) * (M_PI / 180);
 		double c = cos(a), s = sin(a), t0 = 0, t;
+		int32_t row = -1;
 
 		if (radius_at(&C, &env, n, N, &r, &eps) != 0)
 			goto out;
@@ -901,10 +904,10 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
 		grid_fit(&C, r);
 		t = brute ? place_brute(&C, t0, c, s, r) :
-		    place_exact(&C, n, t0, a, c, s, r);
+		    place_exact(&C, n, t0, a, c, s, r, &row);
 		if (t > C.cv.tmax)
 			break;
-		coll_add(&C, t, a, c, s, r);
+		coll_add(&C, t, row, a, c, s, r);
 		if (model_progress != NULL && n % PROGRESS_EVERY == 0)
 			model_progress(n + 1, 0);
 	}

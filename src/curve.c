@@ -598,8 +598,7 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
     double S2, const struct gap *at_lo, const struct gap *at_hi)
 {
 	double a = at_lo->dd, b = at_lo->half, disc, top = hi;
-	struct gap h = *at_hi, g;
-	int known = 1;		/* h is g at hi */
+	struct gap h = *at_hi, g;	/* h: g at hi, always */
 
 	disc = b * b - a * at_lo->f;
 	if (a > 0 && disc >= 0) {
@@ -614,16 +613,16 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 				hi = guess;
 				h = g;
 			} else if (g.half > 0) {
+				double beyond = guess - g.f / (2 * g.half);
+
 				lo = guess;
-				if (guess - g.f / (2 * g.half) < hi) {
-					hi = guess - g.f / (2 * g.half);
-					known = 0;
+				if (beyond < hi) {
+					hi = beyond;
+					gap(p, hi, q, S2, &h);
 				}
 			}
 		}
 	}
-	if (!known)
-		gap(p, hi, q, S2, &h);
 	if (h.f < 0) {
 		/* Rounding put the guess inside: back to the known end. */
 		lo = hi;
@@ -648,6 +647,9 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 	return hi;
 }
 
+static double	exit_part(const struct piece *, const double b[4][2], double,
+		    double, const double q[2], double, double);
+
 /*
  * The first u in [u0, u1] at which piece p is free; -1: none.  b holds
  * the control points of that part of p, or of a larger part when the
@@ -655,9 +657,6 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
  * near2 and far2 are the squared distances from q to b's box, least
  * and most.
  */
-static double	exit_part(const struct piece *, const double b[4][2], double,
-		    double, const double q[2], double, double);
-
 static double
 exit_sub(const struct piece *p, const double b[4][2], double near2,
     double far2, double u0, double u1, const double q[2], double S2,
