@@ -21,6 +21,18 @@
  * and the largest bound among them, so a walk jumps over all of them
  * at once; that prefix stays valid for every radius above that bound
  * and is rebuilt when radii shrink below it.
+ *
+ * Falling radii cost more, and the map is why: below the
+ * front lie gaps between earlier, larger primordia whose clearance is
+ * a little under the present radius.  Nothing fits there, but a cell's
+ * bound (the least of single primordia's, over a cell about r_min a
+ * side) can lie up to a cell's size above the gap's clearance, so the
+ * walk stops and looks.  Measured on the hemisphere with r falling
+ * 0.003 -> 0.0005: 2.7 such stops a walk (the dome: 0.02), nine in ten
+ * at gaps within r_min of r that fit nothing.  Five in six cells that
+ * walks stop in are stopped in once or twice in all, so a closer proof
+ * made at a stop (refine()) is seldom used before the radius falls
+ * past it.
  */
 #include <math.h>
 #include <stdlib.h>
