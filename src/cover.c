@@ -665,6 +665,20 @@ all_below(uint64_t x, uint64_t add)
 	return ((((x & lo) + add) | (((x >> 8) & lo) + add)) & carry) == 0;
 }
 
+/*
+ * Column j's eight cells of the tile above run's, row e its first: in
+ * a run of blocks of one z the tiles of a group of columns lie one
+ * after another (cover_init), so the next is 64 bytes on.
+ */
+static inline const uint8_t *
+column_up(const struct cover *cv, const uint8_t *run, int32_t e, int32_t j)
+{
+	if (e >= cv->rows)
+		return run;	/* the scan ends: never read */
+	return cv->bz[e >> 3] == cv->bz[(e >> 3) - 1] ? run + 64 :
+	    cell(cv, e, j);
+}
+
 /* Column j's prefix grows by n rows, the largest bound among them most. */
 static void
 prefix_grow(struct cover *cv, int32_t j, int32_t n, uint8_t most)
@@ -681,6 +695,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	int32_t k = *row, h, e;
 	uint8_t lim, most = 0;
 	uint64_t below_lim, below_most;
+	const uint8_t *run;
 
 	if (cv->band && *t >= cv->t_row[cv->rows]) {
 		*row = -1;	/* unmapped: the walk goes on alone */
@@ -711,8 +726,8 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	lim = cv->lim;
 	below_lim = lanes(lim);
 	below_most = lanes(1);
+	run = cell(cv, k & ~7, j);
 	for (e = k; e < cv->rows; ) {
-		const uint8_t *run = cell(cv, e & ~7, j);
 		int i = e & 7, end = cv->rows - (e & ~7) < 8 ?
 		    cv->rows - (e & ~7) : 8;
 
@@ -727,6 +742,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 			memcpy(&x, run, sizeof(x));
 			if (all_below(x, below_most)) {
 				e += 8;
+				run = column_up(cv, run, e, j);
 				continue;
 			}
 			if (all_below(x, below_lim)) {
@@ -734,6 +750,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 					most = run[b] > most ? run[b] : most;
 				below_most = lanes(most + 1);
 				e += 8;
+				run = column_up(cv, run, e, j);
 				continue;
 			}
 		}
@@ -742,6 +759,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		e = (e & ~7) + i;
 		if (i < end)
 			break;
+		run = column_up(cv, run, e, j);
 	}
 	if (e == k)
 		return 0;
