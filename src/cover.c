@@ -393,13 +393,16 @@ cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
  */
 static inline double
 least_proj(const struct cover *cv, int z, int32_t jz, double x, double y,
-    double rho)
+    double rho, int opp)
 {
 	const double *e = &cv->edge[z][2 * jz];
 	double a = x * e[0] + y * e[1], b = x * e[2] + y * e[3];
 
-	/* Opposite (x, y) inside the column (narrower than pi): sines say. */
-	if ((cv->cols >> z) >= 3 && -(e[0] * y - e[1] * x) >= 0 &&
+	/*
+	 * Opposite (x, y) inside the column (narrower than pi): sines say.
+	 * Asked only where the caller's columns reach round to it (opp).
+	 */
+	if (opp && (cv->cols >> z) >= 3 && -(e[0] * y - e[1] * x) >= 0 &&
 	    -(x * e[3] - y * e[2]) >= 0)
 		return -rho;
 	return a < b ? a : b;
@@ -437,9 +440,9 @@ subs_of(const struct cover *cv, int32_t k, double z, double rho,
 
 static inline double
 farthest(const struct cover *cv, int zk, int32_t jz, double x, double y,
-    double rho, const struct subs *sb, double hk)
+    double rho, const struct subs *sb, double hk, int opp)
 {
-	double m = least_proj(cv, zk, jz, x, y, rho);
+	double m = least_proj(cv, zk, jz, x, y, rho, opp);
 	double far = sb->A[0] - sb->B[0] * m;
 
 	for (int sa = 1; sa < COVER_SUB; sa++) {
@@ -462,6 +465,8 @@ struct row_add {
 	double		 rk, dz;		/* the row's middle */
 	double		 reach2, near2, dk, hk, q, inv_q;
 	uint8_t		 final;
+	int		 opp;			/* the row's cells reach the
+						   opposite meridian */
 	const double	*mid;
 	int		 have_sb;
 	struct subs	 sb;
@@ -506,7 +511,7 @@ cell_add(const struct cover *cv, struct row_add *ra, int32_t j, uint8_t *up)
 			ra->have_sb = 1;
 		}
 		U = farthest(cv, ra->zk, j, ra->x, ra->y, ra->rho, &ra->sb,
-		    ra->hk) - ra->r;
+		    ra->hk, ra->opp) - ra->r;
 	}
 	lower_at(up, ra->inv_q, U);
 }
@@ -571,6 +576,13 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 	}
 	run[nrun][0] = lo;
 	run[nrun++][1] = hi;
+	/*
+	 * The meridian opposite the primordium lies in column jc + ncol / 2,
+	 * give or take one, and no point of columns jc - w .. jc + w is
+	 * further round than w + 1 columns from it: only 2 w + 3 >= ncol
+	 * can reach it.  Elsewhere the least projection is at an edge.
+	 */
+	ra->opp = 2 * w + 3 >= ncol;
 	for (int i = 0; i < nrun; i++) {
 		int32_t j = run[i][0];
 		uint8_t *up = tiles + (size_t)(j >> 3) * stride + (size_t)((j &
