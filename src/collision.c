@@ -552,8 +552,10 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 	double t = t0, to;
 
 	while (t <= C->cv.tmax) {
-		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k))
-			continue;
+		/* One call leaves t where the walk must look. */
+		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k) &&
+		    !(t <= C->cv.tmax))
+			break;
 		if (free_at(C, t, c, s, r, &to)) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;

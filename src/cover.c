@@ -646,13 +646,13 @@ prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
 
 /*
  * Move the walk to the start of row k: past the tip if there is none,
- * to the band's end if the map ends below the tip.
+ * to the band's end, where no row is, if the map ends below the tip.
  */
 static int
 move_to(const struct cover *cv, double *t, int32_t *row, int32_t k)
 {
 	*t = k == cv->rows && !cv->band ? HUGE_VAL : cv->t_row[k];
-	*row = k;
+	*row = k < cv->rows ? k : -1;
 	return 1;
 }
 
@@ -705,6 +705,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 {
 	/* Walks mostly step a row at a time: try the next row first. */
 	int32_t k = *row, h, e;
+	int moved = 0;
 	uint8_t lim, most = 0;
 	uint64_t below_lim, below_most;
 	const uint8_t *run;
@@ -724,7 +725,11 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	h = cv->head[j];
 	if (k < h) {
 		e = prefix_next(cv, j, k, r);
-		return e == k ? 0 : move_to(cv, t, row, e);
+		if (e < h || h >= cv->rows)
+			return e == k ? 0 : move_to(cv, t, row, e);
+		/* To the head, and on up from it now, not in another call. */
+		moved = move_to(cv, t, row, h);
+		k = h;
 	}
 	/*
 	 * At or past the head: every covered row from here in one go,
@@ -769,7 +774,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		run = column_up(cv, run, e, j);
 	}
 	if (e == k)
-		return 0;
+		return moved;
 	if (k == h)
 		prefix_grow(cv, j, e - k, most);
 	return move_to(cv, t, row, e);

@@ -108,8 +108,10 @@ void	cover_lower(struct cover *, int32_t k, int32_t j, double U);
 
 /*
  * If t lies in covered cells of column j for radius r, move it past
- * them and return 1; else return 0.  *row is the row of t after, and
- * a guess of it before (-1: none).  Past the band, never.
+ * them and return 1; else return 0.  Either way t is then where the
+ * walk must look: a cell not covered, an exception, the tip or past
+ * the band.  *row is the row of t after, and a guess of it before
+ * (-1: none).  Past the band, never.
  */
 int	cover_skip(struct cover *, double *t, int32_t j, double r,
 	    int32_t *row);
