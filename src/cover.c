@@ -107,6 +107,31 @@ column_reset(struct cover *cv, int32_t j)
 	cv->first[j] = cv->last[j] = -1;
 }
 
+/*
+ * Each row's kappa: the distance within which the squared distance to
+ * a point is a convex function along the row, the least of the pieces'
+ * it runs through (all of one segment, so one polynomial, convex on
+ * each piece and so on all of them).  A row across a joint of two
+ * segments, where the curve may turn a corner, gets 0.
+ */
+static void
+row_kappa(struct cover *cv, const struct curve *c)
+{
+	size_t i = 0;
+
+	for (int32_t k = 0; k < cv->rows; k++) {
+		double t0 = cv->t_row[k], t1 = cv->t_row[k + 1], kap = HUGE_VAL;
+
+		while (i + 1 < c->npc && c->pc[i].t1 <= t0)
+			i++;
+		for (size_t n = i; n < c->npc && c->pc[n].t0 < t1; n++)
+			kap = fmin(kap, c->pc[n].kappa);
+		if (floor(t0) < ceil(t1) - 1)
+			kap = 0;	/* an integer t, a joint, inside */
+		cv->kappa[k] = kap;
+	}
+}
+
 void
 cover_init(struct cover *cv, const struct curve *c, double r_min,
     double s_band, double cells_most)
@@ -162,6 +187,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
 	cv->d = xcalloc((size_t)cv->rows, sizeof(*cv->d));
 	cv->h = xcalloc((size_t)cv->rows, sizeof(*cv->h));
+	cv->kappa = xcalloc((size_t)cv->rows, sizeof(*cv->kappa));
 	for (int32_t k = 0; k <= cv->rows; k++)
 		cv->t_row[k] = k == cv->rows && !cv->band ? c->tmax :
 		    curve_t(c, fmin(k * a, c->length));
@@ -173,6 +199,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		cv->z_c[k] = p[1];
 		cv->h[k] = (s1 - s0) / 2;
 	}
+	row_kappa(cv, c);
 	blocks = (cv->rows + 7) / 8;
 	cv->bz = xcalloc((size_t)blocks, sizeof(*cv->bz));
 	cv->bbase = xcalloc((size_t)blocks, sizeof(*cv->bbase));
@@ -277,6 +304,7 @@ cover_free(struct cover *cv)
 	free(cv->z_c);
 	free(cv->d);
 	free(cv->h);
+	free(cv->kappa);
 	free(cv->sub);
 	free(cv->bz);
 	free(cv->bbase);
@@ -423,18 +451,30 @@ least_proj(const struct cover *cv, int z, int32_t jz, double x, double y,
  */
 struct subs {
 	double	 A[COVER_SUB], B[COVER_SUB];
+	int	 n;		/* how many to try */
 };
 
+/*
+ * With m fixed, A_s - B_s m is |C_s - (m, z)|^2 + rho^2 - m^2: the
+ * squared distance from a point of the meridian plane to the sub-row's
+ * point C_s on the generating curve, and a constant.  Where the curve
+ * bends gently enough for the distances at hand (ends_do), that is a
+ * convex function along the row, and the end sub-rows are the
+ * farthest: only they are tried.
+ */
 static void
 subs_of(const struct cover *cv, int32_t k, double z, double rho,
-    struct subs *sb)
+    int ends_do, struct subs *sb)
 {
+	sb->n = 0;
 	for (int sa = 0; sa < COVER_SUB; sa++) {
 		const double *sp = cv->sub[k * COVER_SUB + sa];
 		double dz = sp[1] - z;
 
-		sb->A[sa] = sp[0] * sp[0] + dz * dz + rho * rho;
-		sb->B[sa] = 2 * sp[0];
+		if (ends_do && sa != 0 && sa != COVER_SUB - 1)
+			continue;
+		sb->A[sb->n] = sp[0] * sp[0] + dz * dz + rho * rho;
+		sb->B[sb->n++] = 2 * sp[0];
 	}
 }
 
@@ -443,11 +483,11 @@ farthest(const struct cover *cv, int zk, int32_t jz, double x, double y,
     double rho, const struct subs *sb, double hk, int opp)
 {
 	double m = least_proj(cv, zk, jz, x, y, rho, opp);
-	double far = sb->A[0] - sb->B[0] * m;
+	double far = sb->A[0] - sb->B[0] * m, f = sb->A[1] - sb->B[1] * m;
 
-	for (int sa = 1; sa < COVER_SUB; sa++) {
-		double f = sb->A[sa] - sb->B[sa] * m;
-
+	far = f > far ? f : far;
+	for (int sa = 2; sa < sb->n; sa++) {
+		f = sb->A[sa] - sb->B[sa] * m;
 		far = f > far ? f : far;
 	}
 	return sqrt(far) + hk / COVER_SUB;
@@ -467,6 +507,8 @@ struct row_add {
 	uint8_t		 final;
 	int		 opp;			/* the row's cells reach the
 						   opposite meridian */
+	int		 ends_do;		/* the end sub-rows are the
+						   farthest */
 	const double	*mid;
 	int		 have_sb;
 	struct subs	 sb;
@@ -507,7 +549,8 @@ cell_add(const struct cover *cv, struct row_add *ra, int32_t j, uint8_t *up)
 		U = sqrt(D2) - ra->r + ra->dk;
 	else {
 		if (!ra->have_sb) {
-			subs_of(cv, ra->k, ra->z, ra->rho, &ra->sb);
+			subs_of(cv, ra->k, ra->z, ra->rho, ra->ends_do,
+			    &ra->sb);
 			ra->have_sb = 1;
 		}
 		U = farthest(cv, ra->zk, j, ra->x, ra->y, ra->rho, &ra->sb,
@@ -583,6 +626,8 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 	 * can reach it.  Elsewhere the least projection is at an edge.
 	 */
 	ra->opp = 2 * w + 3 >= ncol;
+	/* No cell point is further than reach + d from the primordium. */
+	ra->ends_do = reach + cv->d[k] < cv->kappa[k];
 	for (int i = 0; i < nrun; i++) {
 		int32_t j = run[i][0];
 		uint8_t *up = tiles + (size_t)(j >> 3) * stride + (size_t)((j &

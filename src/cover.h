@@ -31,6 +31,8 @@ struct cover {
 	double		*rho_c, *z_c;	/* rows: the row's middle point */
 	double		*d;		/* rows: cell points lie this near */
 	double		*h;		/* rows: half the row's arc length */
+	double		*kappa;		/* rows: distances to a point are
+					   convex along the row within it */
 	/*
 	 * Rows nearer the axis than the widest have fewer columns, so
 	 * that cells are not slivers there: each run of 8 rows has
