@@ -325,17 +325,24 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
  * At curve parameter t on the meridian (c, s) = (cos, sin) of the new
  * primordium of radius r: 1 if nothing overlaps it, else 0 and *to the
  * furthest exit from the primordia that do (HUGE_VAL: past the tip).
+ * pd, if not NULL, is the curve's point and dp/dt at t, known already.
  */
 static int
 free_at(const struct coll *C, double t, double c, double s, double r,
-    double *to)
+    const double *pd, double *to)
 {
 	double p[2], d[2], x, y, z, best = -1;
 	int32_t lo[3], hi[3];
 	struct hit hits[HITS];
 	int n = 0;
 
-	curve_eval(&C->cv, t, p, d);	/* d: the tangent, for the guesses */
+	if (pd != NULL) {
+		p[0] = pd[0];
+		p[1] = pd[1];
+		d[0] = pd[2];
+		d[1] = pd[3];
+	} else	/* d: the tangent, for the guesses */
+		curve_eval(&C->cv, t, p, d);
 	x = p[0] * c;
 	y = p[0] * s;
 	z = p[1];
@@ -553,10 +560,15 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 
 	while (t <= C->cv.tmax) {
 		/* One call leaves t where the walk must look. */
+		const double *pd = NULL;
+
 		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k) &&
 		    !(t <= C->cv.tmax))
 			break;
-		if (free_at(C, t, c, s, r, &to)) {
+		/* Moved to a row's start: the curve there is known. */
+		if (k >= 0 && t == C->cover.t_row[k])
+			pd = C->cover.start[k];
+		if (free_at(C, t, c, s, r, pd, &to)) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;
 		}

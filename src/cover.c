@@ -187,6 +187,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
 	cv->d = xcalloc((size_t)cv->rows, sizeof(*cv->d));
 	cv->h = xcalloc((size_t)cv->rows, sizeof(*cv->h));
+	cv->start = xcalloc((size_t)cv->rows, sizeof(*cv->start));
 	cv->kappa = xcalloc((size_t)cv->rows, sizeof(*cv->kappa));
 	for (int32_t k = 0; k <= cv->rows; k++)
 		cv->t_row[k] = k == cv->rows && !cv->band ? c->tmax :
@@ -194,6 +195,8 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	for (int32_t k = 0; k < cv->rows; k++) {
 		double s0 = k * a, s1 = fmin((k + 1) * a, c->length), p[2];
 
+		/* Walks look here first when they come to a row. */
+		curve_eval(c, cv->t_row[k], cv->start[k], cv->start[k] + 2);
 		curve_eval(c, curve_t(c, (s0 + s1) / 2), p, NULL);
 		cv->rho_c[k] = p[0];
 		cv->z_c[k] = p[1];
@@ -300,6 +303,7 @@ void
 cover_free(struct cover *cv)
 {
 	free(cv->t_row);
+	free(cv->start);
 	free(cv->rho_c);
 	free(cv->z_c);
 	free(cv->d);

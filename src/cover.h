@@ -27,6 +27,9 @@ struct cover {
 	int32_t		 rows, cols;
 	double		*t_row;		/* rows + 1: t at each row's start,
 					   then the band's end */
+	double		(*start)[4];	/* rows: the curve's point and dp/dt
+					   at t_row, as curve_eval() gives
+					   them */
 	int		 band;		/* the rows end below the tip */
 	double		*rho_c, *z_c;	/* rows: the row's middle point */
 	double		*d;		/* rows: cell points lie this near */
