@@ -325,13 +325,14 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
  * At curve parameter t on the meridian (c, s) = (cos, sin) of the new
  * primordium of radius r: 1 if nothing overlaps it, else 0 and *to the
  * furthest exit from the primordia that do (HUGE_VAL: past the tip).
- * pd, if not NULL, is the curve's point and dp/dt at t, known already.
+ * pd, if not NULL, is the curve's point and dp/dt at t, known already;
+ * p is the point, after.
  */
 static int
 free_at(const struct coll *C, double t, double c, double s, double r,
-    const double *pd, double *to)
+    const double *pd, double p[2], double *to)
 {
-	double p[2], d[2], x, y, z, best = -1;
+	double d[2], x, y, z, best = -1;
 	int32_t lo[3], hi[3];
 	struct hit hits[HITS];
 	int n = 0;
@@ -549,11 +550,12 @@ refine_pays(const struct coll *C, long long n, long long period, double r)
 
 /*
  * The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none.
- * *row is t's row of the cover map, if the walk found it, else -1.
+ * *row is t's row of the cover map, if the walk found it, else -1, and
+ * p the curve's point at t.
  */
 static double
 place_exact(struct coll *C, long long n, double t0, double phi, double c,
-    double s, double r, int32_t *row)
+    double s, double r, int32_t *row, double p[2])
 {
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
 	double t = t0, to;
@@ -568,7 +570,7 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 		/* Moved to a row's start: the curve there is known. */
 		if (k >= 0 && t == C->cover.t_row[k])
 			pd = C->cover.start[k];
-		if (free_at(C, t, c, s, r, pd, &to)) {
+		if (free_at(C, t, c, s, r, pd, p, &to)) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;
 		}
@@ -693,10 +695,13 @@ radius_at(const struct coll *C, struct expr_env *env, long long n,
 	return 0;
 }
 
-/* Primordium n at t, row (-1: not known) of the cover map, angle phi. */
+/*
+ * Primordium n at t, row (-1: not known) of the cover map, angle phi;
+ * at is the curve's point at t, if the walk has it (else NULL).
+ */
 static void
 coll_add(struct coll *C, double t, int32_t row, double phi, double c,
-    double s, double r)
+    double s, double r, const double *at)
 {
 	double p[2];
 	struct prim *o;
@@ -706,7 +711,11 @@ coll_add(struct coll *C, double t, int32_t row, double phi, double c,
 		C->pr = xreallocarray(C->pr, C->cap, sizeof(*C->pr));
 		C->next = xreallocarray(C->next, C->cap, sizeof(*C->next));
 	}
-	curve_eval(&C->cv, t, p, NULL);
+	if (at != NULL) {
+		p[0] = at[0];
+		p[1] = at[1];
+	} else
+		curve_eval(&C->cv, t, p, NULL);
 	o = &C->pr[C->n];
 	o->x = p[0] * c;
 	o->y = p[0] * s;
@@ -906,10 +915,10 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	C.next = xcalloc_big(C.cap, sizeof(*C.next));
 	C.reach = fmin(band, C.cv.area);
 	grid_fit(&C, r);
-	coll_add(&C, 0, -1, 0, 1, 0, r);
+	coll_add(&C, 0, -1, 0, 1, 0, r, NULL);
 	for (long long n = 1; n < N; n++) {
 		double a = angle_mod360((double)n, alpha) * (M_PI / 180);
-		double c = cos(a), s = sin(a), t0 = 0, t;
+		double c = cos(a), s = sin(a), t0 = 0, t, at[2];
 		int32_t row = -1;
 
 		if (radius_at(&C, &env, n, N, &r, &eps) != 0)
@@ -918,10 +927,10 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
 		grid_fit(&C, r);
 		t = brute ? place_brute(&C, t0, c, s, r) :
-		    place_exact(&C, n, t0, a, c, s, r, &row);
+		    place_exact(&C, n, t0, a, c, s, r, &row, at);
 		if (t > C.cv.tmax)
 			break;
-		coll_add(&C, t, row, a, c, s, r);
+		coll_add(&C, t, row, a, c, s, r, brute ? NULL : at);
 		if (model_progress != NULL && n % PROGRESS_EVERY == 0)
 			model_progress(n + 1, 0);
 	}
