@@ -273,7 +273,7 @@ furthest_exit(const struct coll *C, double t, const double pt[2],
 	}
 	for (int k = 0; k < n; k++) {
 		const struct hit *h = &hits[k == 0 ? first : k == first ? 0 : k];
-		double e;
+		double e, pe[2];
 
 		if (best == HUGE_VAL)
 			break;	/* past the tip: none goes further */
@@ -284,10 +284,16 @@ furthest_exit(const struct coll *C, double t, const double pt[2],
 			    h->q[1]) * (p[1] - h->q[1]) >= h->S2)
 				continue;
 		}
-		e = curve_exit(&C->cv, t, h->q, h->S2);
+		e = curve_exit(&C->cv, t, h->q, h->S2, pe);
 		/* e == t: touching, up to rounding. */
-		if (e > t && e > best)
+		if (e > t && e > best) {
 			best = e;
+			if (e != HUGE_VAL) {	/* the point there, known */
+				at = e;
+				p[0] = pe[0];
+				p[1] = pe[1];
+			}
+		}
 	}
 	return best;
 }

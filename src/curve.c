@@ -701,7 +701,8 @@ exit_part(const struct piece *p, const double b[4][2], double u0,
 }
 
 double
-curve_exit(const struct curve *cv, double t, const double q[2], double S2)
+curve_exit(const struct curve *cv, double t, const double q[2], double S2,
+    double at[2])
 {
 	double u, part[4][2];
 	size_t i = piece_find(cv, t, &u);
@@ -723,8 +724,11 @@ curve_exit(const struct curve *cv, double t, const double q[2], double S2)
 		} else
 			e = exit_sub(p, (const double (*)[2])p->b, near2, far2, u,
 			    1, q, S2, p->kappa);
-		if (e >= 0)
+		if (e >= 0) {
+			if (at != NULL)
+				piece_eval(p, e, at, NULL);
 			return p->t0 + e * (p->t1 - p->t0);
+		}
 	}
 	return HUGE_VAL;
 }

@@ -67,8 +67,9 @@ double	curve_t_area(const struct curve *, double a, size_t *hint,
  * the point q = (q0, q1): where a primordium leaves the disk in which
  * it would overlap an earlier one.  HUGE_VAL if it never does before
  * the tip.  Exact up to rounding: no sampling, so no gap is skipped.
+ * at, if not NULL, gets the curve's point at t' (before the tip).
  */
 double	curve_exit(const struct curve *, double t, const double q[2],
-	    double S2);
+	    double S2, double at[2]);
 
 #endif
