@@ -470,13 +470,13 @@ static void
 subs_of(const struct cover *cv, int32_t k, double z, double rho,
     int ends_do, struct subs *sb)
 {
+	int step = ends_do ? COVER_SUB - 1 : 1;
+
 	sb->n = 0;
-	for (int sa = 0; sa < COVER_SUB; sa++) {
+	for (int sa = 0; sa < COVER_SUB; sa += step) {
 		const double *sp = cv->sub[k * COVER_SUB + sa];
 		double dz = sp[1] - z;
 
-		if (ends_do && sa != 0 && sa != COVER_SUB - 1)
-			continue;
 		sb->A[sb->n] = sp[0] * sp[0] + dz * dz + rho * rho;
 		sb->B[sb->n++] = 2 * sp[0];
 	}
