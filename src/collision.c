@@ -567,9 +567,9 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 	double t = t0, to;
 
 	while (t <= C->cv.tmax) {
-		/* One call leaves t where the walk must look. */
 		const double *pd = NULL;
 
+		/* One call leaves t where the walk must look. */
 		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k) &&
 		    !(t <= C->cv.tmax))
 			break;

@@ -455,22 +455,24 @@ least_proj(const struct cover *cv, int z, int32_t jz, double x, double y,
  */
 struct subs {
 	double	 A[COVER_SUB], B[COVER_SUB];
-	int	 n;		/* how many to try */
+	int	 n;		/* how many to try: 2 (the ends) or all */
 };
+
+_Static_assert(COVER_SUB >= 2, "farthest() tries at least two sub-rows");
 
 /*
  * With m fixed, A_s - B_s m is |C_s - (m, z)|^2 + rho^2 - m^2: the
  * squared distance from a point of the meridian plane to the sub-row's
  * point C_s on the generating curve, and a constant.  Where the curve
- * bends gently enough for the distances at hand (ends_do), that is a
+ * bends gently enough for the distances at hand (ends_only), that is a
  * convex function along the row, and the end sub-rows are the
  * farthest: only they are tried.
  */
 static void
 subs_of(const struct cover *cv, int32_t k, double z, double rho,
-    int ends_do, struct subs *sb)
+    int ends_only, struct subs *sb)
 {
-	int step = ends_do ? COVER_SUB - 1 : 1;
+	int step = ends_only ? COVER_SUB - 1 : 1;
 
 	sb->n = 0;
 	for (int sa = 0; sa < COVER_SUB; sa += step) {
@@ -511,7 +513,7 @@ struct row_add {
 	uint8_t		 final;
 	int		 opp;			/* the row's cells reach the
 						   opposite meridian */
-	int		 ends_do;		/* the end sub-rows are the
+	int		 ends_only;		/* the end sub-rows are the
 						   farthest */
 	const double	*mid;
 	int		 have_sb;
@@ -553,7 +555,7 @@ cell_add(const struct cover *cv, struct row_add *ra, int32_t j, uint8_t *up)
 		U = sqrt(D2) - ra->r + ra->dk;
 	else {
 		if (!ra->have_sb) {
-			subs_of(cv, ra->k, ra->z, ra->rho, ra->ends_do,
+			subs_of(cv, ra->k, ra->z, ra->rho, ra->ends_only,
 			    &ra->sb);
 			ra->have_sb = 1;
 		}
@@ -631,7 +633,7 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 	 */
 	ra->opp = 2 * w + 3 >= ncol;
 	/* No cell point is further than reach + d from the primordium. */
-	ra->ends_do = reach + cv->d[k] < cv->kappa[k];
+	ra->ends_only = reach + cv->d[k] < cv->kappa[k];
 	for (int i = 0; i < nrun; i++) {
 		int32_t j = run[i][0];
 		uint8_t *up = tiles + (size_t)(j >> 3) * stride + (size_t)((j &
