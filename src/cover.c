@@ -24,15 +24,22 @@
  *
  * Falling radii cost more, and the map is why: below the front lie
  * gaps between earlier, larger primordia whose clearance is a little
- * under the present radius.  Nothing fits there, but a cell's bound
- * (the least of single primordia's, over a cell about r_min a side)
- * can lie up to a cell's size above the gap's clearance, so the walk
- * stops and looks.  Measured on the hemisphere with r falling
+ * under the present radius.  Mostly nothing fits there, but a cell's
+ * bound (the least of single primordia's, over a cell about r_min a
+ * side) can lie up to a cell's size above the gap's clearance, so the
+ * walk stops and looks.  Measured on the hemisphere with r falling
  * 0.003 -> 0.0005: 2.7 such stops a walk (the dome: 0.02), nine in ten
  * at gaps within r_min of r that fit nothing.  Five in six cells that
  * walks stop in are stopped in once or twice in all, so a closer proof
  * made at a stop (refine()) is seldom used before the radius falls
- * past it.
+ * past it: a column comes round again only after some cols walks
+ * (21,000 at the base there), and by then r has fallen 9% (early) to
+ * 33% (late).  Sampled finely, the cells of the stops more than 32
+ * rows below the head (2.2 a walk) had a clearance under 0.8 r in 31%
+ * of stops, 0.8 r to r in 50%, and fitted r, off the walk's meridian,
+ * in 19%: a proof exact to the clearance, made at a cell's first stop
+ * (273,000 cells for 432,000 such stops), could spare at most the
+ * later 37%, and would cost more than a look to make.
  */
 #include <math.h>
 #include <stdlib.h>
