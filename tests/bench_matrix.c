@@ -150,8 +150,8 @@ static const struct {
 int
 main(void)
 {
-	double best[NCASES], bytes[NCASES], dome;
-	size_t placed[NCASES];
+	double best[NCASES], bytes[NCASES] = { 0 }, dome = -1;
+	size_t placed[NCASES] = { 0 };
 
 	signal(SIGPIPE, SIG_IGN);
 	/*
@@ -177,15 +177,17 @@ main(void)
 		}
 	printf("the first cases met, best of %d rounds (target a primordium "
 	    "in brackets; the time a primordium over the dome's):\n", ROUNDS);
-	dome = best[0] > 0 ? best[0] / (double)placed[0] : -1;
+	if (best[0] > 0)
+		dome = best[0] / (double)placed[0];
 	for (size_t i = 0; i < NCASES; i++) {
 		char what[96];
+		double ratio = -1;
 
+		if (best[i] > 0 && dome > 0)
+			ratio = best[i] / (double)placed[i] / dome;
 		snprintf(what, sizeof(what), "%s (%.1f)", cases[i].name,
 		    cases[i].target);
-		row(what, best[i], best[i] < 0 ? 0 : placed[i], bytes[i],
-		    best[i] > 0 && dome > 0 ? best[i] / (double)placed[i] /
-		    dome : -1);
+		row(what, best[i], placed[i], bytes[i], ratio);
 	}
 	if (dome > 0)
 		printf("  %-44s %.2f s (headline: 1.2)\n", "1,000,000 on the "
