@@ -237,6 +237,7 @@ box_cells(const struct coll *C, double x, double y, double z, double q,
  */
 struct hit {
 	double	 q[2], S2, guess;
+	int32_t	 m;		/* the primordium */
 };
 
 #define HITS	32
@@ -320,6 +321,7 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
 		*n = 0;
 	}
 	h = &hits[(*n)++];
+	h->m = m;
 	/* In the meridian plane: a disk. */
 	h->q[0] = o->x * c + o->y * s;
 	h->q[1] = o->z;
@@ -332,15 +334,16 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
  * primordium of radius r: 1 if nothing overlaps it, else 0 and *to the
  * furthest exit from the primordia that do (HUGE_VAL: past the tip).
  * pd, if not NULL, is the curve's point and dp/dt at t, known already;
- * p is the point, after.
+ * p is the point, after.  hits[0..*nh) are the overlapping primordia
+ * (the last HITS of them, if more), for refine().
  */
 static int
 free_at(const struct coll *C, double t, double c, double s, double r,
-    const double *pd, double p[2], double *to)
+    const double *pd, double p[2], double *to, struct hit hits[HITS],
+    int *nh)
 {
 	double d[2], x, y, z, best = -1;
 	int32_t lo[3], hi[3];
-	struct hit hits[HITS];
 	int n = 0;
 
 	if (pd != NULL) {
@@ -368,6 +371,7 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 						exit_from(C, m, t, p, d, x, y, z, c,
 						    s, r, hits, &n, &best);
 				}
+	*nh = n;
 	if ((best = furthest_exit(C, t, p, d, hits, n, best)) < 0)
 		return 1;
 	*to = best;
@@ -417,55 +421,52 @@ refine_check(struct coll *C, int32_t k, int32_t j, double U)
  * Try to prove cell (k, j) covered after all: a cell the walk found
  * blocked along its meridian but that cover_add's one bound per cell
  * left open.  The same bound on 4 x 4 sub-cells, from the primordia
- * near the cell, is four times tighter.
+ * over the cell, is four times tighter.
+ *
+ * Those primordia are the look's hits[0..nh): the ones over the point
+ * where the walk found the cell blocked, which the walk has just left
+ * by their furthest exit, past the row.  A bound from some of the
+ * primordia near a point is still a bound (the least over all of them
+ * can only be lower), so a proof from these holds; gathering every
+ * primordium near the cell instead, a second search of the grid, cost
+ * the dome 9% of its instructions and proved 2% more cells, with not
+ * one look fewer (measured).
  */
 static int
-refine(struct coll *C, int32_t k, int32_t j, double r)
+refine(struct coll *C, int32_t k, int32_t j, double r,
+    const struct hit *hits, int nh)
 {
 	const struct cover *cv = &C->cover;
-	double mid[2], cs[COVER_SUB][2], worst = 0, q = cv->d[k] + r + C->rmax;
+	double mid[2], cs[COVER_SUB][2], worst = 0;
 	double mx, my, mz = cv->z_c[k];
 	struct near {
 		double	 x, y, z, r, d2;
-	} near[64];
-	int32_t nn = 0, lo[3], hi[3];
+	} near[HITS];
+	int nn = 0;
 
 	cover_dirs(cv, k, j, mid, cs);
 	mx = cv->rho_c[k] * mid[0];
 	my = cv->rho_c[k] * mid[1];
-	if (box_cells(C, mx, my, mz, q, lo, hi) > 64)
-		return 0;	/* radii have outgrown the grid: not worth it */
-	for (int32_t a = lo[0]; a <= hi[0]; a++)
-		for (int32_t b = lo[1]; b <= hi[1]; b++)
-			for (int32_t c = lo[2]; c <= hi[2]; c++) {
-				int32_t key[3] = { a, b, c };
+	for (int h = 0; h < nh; h++) {
+		const struct prim *o = &C->pr[hits[h].m];
+		double dx = mx - o->x, dy = my - o->y, dz = mz - o->z;
+		double d2 = dx * dx + dy * dy + dz * dz;
+		double qo = cv->d[k] + r + o->r;
+		int i = nn;
 
-				for (int32_t m = slot_find(C, key)->head; m >= 0;
-				    m = C->next[m]) {
-					const struct prim *o = &C->pr[m];
-					double dx = mx - o->x, dy = my - o->y,
-					    dz = mz - o->z;
-					double d2 = dx * dx + dy * dy + dz * dz;
-					double qo = cv->d[k] + r + o->r;
-					int32_t i = nn;
-
-					/*
-					 * Farther than this, it leaves every point
-					 * of the cell clear by r or more: it could
-					 * only be the least where the cell fails.
-					 */
-					if (d2 >= qo * qo)
-						continue;
-					if (nn == 64)
-						return 0; /* not worth it */
-					/* Nearest first: they settle most points. */
-					for (; i > 0 && near[i - 1].d2 > d2; i--)
-						near[i] = near[i - 1];
-					near[i] = (struct near){ o->x, o->y, o->z,
-					    o->r, d2 };
-					nn++;
-				}
-			}
+		/*
+		 * Farther than this, it leaves every point of the cell
+		 * clear by r or more: it could only be the least where the
+		 * cell fails.
+		 */
+		if (d2 >= qo * qo)
+			continue;
+		/* Nearest first: they settle most points. */
+		for (; i > 0 && near[i - 1].d2 > d2; i--)
+			near[i] = near[i - 1];
+		near[i] = (struct near){ o->x, o->y, o->z, o->r, d2 };
+		nn++;
+	}
 	/*
 	 * Sub-rows from the top: the walk found the cell blocked from
 	 * below, so what is open in it is mostly towards the front, and
@@ -478,7 +479,7 @@ refine(struct coll *C, int32_t k, int32_t j, double r)
 			double x = p[0] * cs[sb][0], y = p[0] * cs[sb][1];
 			double best = HUGE_VAL;
 
-			for (int32_t i = 0; i < nn; i++) {
+			for (int i = 0; i < nn; i++) {
 				double dx = x - near[i].x, dy = y - near[i].y,
 				    dz = p[1] - near[i].z;
 				double d2 = dx * dx + dy * dy + dz * dz;
@@ -565,9 +566,11 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 {
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
 	double t = t0, to;
+	struct hit hits[HITS];
 
 	while (t <= C->cv.tmax) {
 		const double *pd = NULL;
+		int nh;
 
 		/* One call leaves t where the walk must look. */
 		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k) &&
@@ -576,7 +579,7 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 		/* Moved to a row's start: the curve there is known. */
 		if (k >= 0 && t == C->cover.t_row[k])
 			pd = C->cover.start[k];
-		if (free_at(C, t, c, s, r, pd, p, &to)) {
+		if (free_at(C, t, c, s, r, pd, p, &to, hits, &nh)) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;
 		}
@@ -584,7 +587,7 @@ place_exact(struct coll *C, long long n, double t0, double phi, double c,
 		if (!C->nocover && k == C->cover.head[j] &&
 		    to >= C->cover.t_row[k + 1]) {
 			if (!refine_pays(C, n, C->cover.cols >> C->cover.bz[k >>
-			    3], r) || !refine(C, k, j, r))
+			    3], r) || !refine(C, k, j, r, hits, nh))
 				cover_passed(&C->cover, j, k);
 		}
 		t = to;		/* k, the row before, is where its row is sought from */
