@@ -542,7 +542,8 @@ near_point(void *ctx, const double p[3], double U)
  * down to a bound a little under r.  If the law falls further than
  * that, by REFINE_FALL, before the walks come round to the cell again
  * (period primordia on), no walk uses the proof: on the falling
- * hemisphere refine() cost more than it saved.
+ * hemisphere refine() cost more than it saved, and still does from the
+ * look's hits alone (2% more instructions; the disk 1%).
  */
 static int
 refine_pays(const struct coll *C, long long n, long long period, double r)
