@@ -40,6 +40,13 @@
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
 				   walk's steps vanish in double precision */
 
+/* Ask for a line of memory ahead of its use, where the compiler can. */
+#if defined(__GNUC__)
+#define PREFETCH(p)	__builtin_prefetch(p)
+#else
+#define PREFETCH(p)	((void)(p))
+#endif
+
 void	(*model_progress)(long long done, int last);
 
 enum { CO_RECEPTACLE, CO_RADIUS, CO_EPSILON, CO_PARASTICHIES, CO__N };
@@ -120,11 +127,10 @@ hash3(const int32_t k[3])
 	return h ^ h >> 15;
 }
 
+/* Cell k's slot, or the empty one it would take, from slot i on. */
 static struct slot *
-slot_find(const struct coll *C, const int32_t k[3])
+slot_from(const struct coll *C, const int32_t k[3], uint32_t i)
 {
-	uint32_t i = hash3(k) & C->mask;
-
 	for (;; i = (i + 1) & C->mask) {
 		struct slot *s = &C->slot[i];
 
@@ -132,6 +138,12 @@ slot_find(const struct coll *C, const int32_t k[3])
 		    s->key[2] == k[2]))
 			return s;
 	}
+}
+
+static struct slot *
+slot_find(const struct coll *C, const int32_t k[3])
+{
+	return slot_from(C, k, hash3(k) & C->mask);
 }
 
 /* Far-flung cells share a key: slower, never wrong, and no overflow. */
@@ -342,7 +354,7 @@ free_at(const struct coll *C, double t, double c, double s, double r,
     const double *pd, double p[2], double *to, struct hit hits[HITS],
     int *nh)
 {
-	double d[2], x, y, z, best = -1;
+	double d[2], x, y, z, best = -1, cells;
 	int32_t lo[3], hi[3];
 	int n = 0;
 
@@ -356,21 +368,42 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 	x = p[0] * c;
 	y = p[0] * s;
 	z = p[1];
-	if (box_cells(C, x, y, z, r + C->rmax, lo, hi) > (double)C->n) {
+	if ((cells = box_cells(C, x, y, z, r + C->rmax, lo, hi)) >
+	    (double)C->n) {
 		for (size_t m = 0; m < C->n; m++)
 			exit_from(C, (int32_t)m, t, p, d, x, y, z, c, s, r, hits,
 			    &n, &best);
-	} else
+	} else {
+		/*
+		 * The cells' slots first, each one's line asked for ahead:
+		 * the table is megabytes, and a box's cells' slots lie far
+		 * apart in it.  The grid's cells are at least half the box
+		 * (grid_fit()): 27 at most, but for the first primordia.
+		 */
+		uint32_t at[27];
+		int ahead = cells <= 27, nc = 0;
+
+		for (int32_t i = lo[0]; ahead && i <= hi[0]; i++)
+			for (int32_t j = lo[1]; j <= hi[1]; j++)
+				for (int32_t k = lo[2]; k <= hi[2]; k++) {
+					int32_t key[3] = { i, j, k };
+
+					at[nc] = hash3(key) & C->mask;
+					PREFETCH(&C->slot[at[nc++]]);
+				}
+		nc = 0;
 		for (int32_t i = lo[0]; i <= hi[0]; i++)
 			for (int32_t j = lo[1]; j <= hi[1]; j++)
 				for (int32_t k = lo[2]; k <= hi[2]; k++) {
 					int32_t key[3] = { i, j, k }, m;
 
-					for (m = slot_find(C, key)->head; m >= 0;
-					    m = C->next[m])
+					m = (ahead ? slot_from(C, key, at[nc++]) :
+					    slot_find(C, key))->head;
+					for (; m >= 0; m = C->next[m])
 						exit_from(C, m, t, p, d, x, y, z, c,
 						    s, r, hits, &n, &best);
 				}
+	}
 	*nh = n;
 	if ((best = furthest_exit(C, t, p, d, hits, n, best)) < 0)
 		return 1;
