@@ -40,13 +40,6 @@
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
 				   walk's steps vanish in double precision */
 
-/* Ask for a line of memory ahead of its use, where the compiler can. */
-#if defined(__GNUC__)
-#define PREFETCH(p)	__builtin_prefetch(p)
-#else
-#define PREFETCH(p)	((void)(p))
-#endif
-
 void	(*model_progress)(long long done, int last);
 
 enum { CO_RECEPTACLE, CO_RADIUS, CO_EPSILON, CO_PARASTICHIES, CO__N };
@@ -901,6 +894,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	    how == PLACE_BRUTE, .check = how == PLACE_CHECK,
 	    .rconst = rconst };
 	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band, k;
+	double a_next;
 	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
 	int npts, rc = -1, full = 0;
 
@@ -964,9 +958,9 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 	C.reach = fmin(band, C.cv.area);
 	grid_fit(&C, r);
 	coll_add(&C, 0, -1, 0, 1, 0, r, NULL);
+	a_next = angle_mod360(1, alpha) * (M_PI / 180);
 	for (long long n = 1; n < N; n++) {
-		double a = angle_mod360((double)n, alpha) * (M_PI / 180);
-		double c = cos(a), s = sin(a), t0 = 0, t, at[2];
+		double a = a_next, c = cos(a), s = sin(a), t0 = 0, t, at[2];
 		int32_t row = -1;
 
 		if (radius_at(&C, &env, n, N, &r, &eps) != 0)
@@ -974,6 +968,10 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 		if (eps >= 0)
 			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
 		grid_fit(&C, r);
+		/* The next walk's first cells on their way in meanwhile. */
+		a_next = angle_mod360((double)(n + 1), alpha) * (M_PI / 180);
+		if (!C.nocover)
+			cover_ahead(&C.cover, a_next);
 		t = brute ? place_brute(&C, t0, c, s, r) :
 		    place_exact(&C, n, t0, a, c, s, r, &row, at);
 		if (t > C.cv.tmax)

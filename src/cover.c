@@ -675,6 +675,15 @@ cover_add(struct cover *cv, double t, int32_t row, double phi, double x,
 		row_add(cv, &ra, k, jphi);
 }
 
+void
+cover_ahead(const struct cover *cv, double phi)
+{
+	int32_t j = cover_col(cv, phi), k = cv->head[j];
+
+	if (k < cv->rows)
+		PREFETCH(cell(cv, k & ~7, j));
+}
+
 /* The row where t moves next in column j, below its head: an exception or the head. */
 static int32_t
 prefix_next(struct cover *cv, int32_t j, int32_t k, double r)

@@ -98,6 +98,14 @@ double	cover_angles(const struct cover *, int32_t k, int32_t j,
 void	cover_dirs(const struct cover *, int32_t k, int32_t j, double mid[2],
 	    double sub[COVER_SUB][2]);
 
+/*
+ * A walk at angle phi comes next: ask for its column's cells at the
+ * head of its prefix, where it will look first, ahead of time.  Each
+ * walk's column is far from the last one's, and its cells are seldom
+ * in the cache (the dome's map is 17 MB).
+ */
+void	cover_ahead(const struct cover *, double phi);
+
 /* The row holding t. */
 int32_t	cover_row(const struct cover *, double t);
 
