@@ -339,8 +339,9 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
  * primordium of radius r: 1 if nothing overlaps it, else 0 and *to the
  * furthest exit from the primordia that do (HUGE_VAL: past the tip).
  * pd, if not NULL, is the curve's point and dp/dt at t, known already;
- * p is the point, after.  hits[0..*nh) are the overlapping primordia
- * (the last HITS of them, if more), for refine().
+ * p is the point, after.  hits[0..*nh) are the overlapping primordia,
+ * for refine(): all of them, or of more than HITS the ones after the
+ * last full set, which was worked out as it filled.
  */
 static int
 free_at(const struct coll *C, double t, double c, double s, double r,
@@ -371,7 +372,8 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 		 * The cells' slots first, each one's line asked for ahead:
 		 * the table is megabytes, and a box's cells' slots lie far
 		 * apart in it.  The grid's cells are at least half the box
-		 * (grid_fit()): 27 at most, but for the first primordia.
+		 * (grid_fit()), so it meets 27 at most; were it more, the
+		 * slots are found as before.
 		 */
 		uint32_t at[27];
 		int ahead = cells <= 27, nc = 0;
