@@ -853,11 +853,12 @@ law_extent(struct coll *C, long long N, double r0, double *rmin,
 /*
  * The neighbour grid's cells: 8 radii of the primordium being placed,
  * and at least twice the reach of the largest placed, so that a look's
- * box (r + rmax either side) meets at most two cells along each axis:
+ * box (r + rmax either side) meets at most two cells along each axis
+ * as built, three before radii have moved far enough for a rebuild:
  * with cells of one reach, when radii had fallen, the box met two to
  * three, some twenty cells a look, and finding them took more time
  * than the primordia in them (the falling hemisphere: 5% more).
- * Rebuilt when radii have fallen or grown by half: a grid sized for
+ * Rebuilt when the size wanted has halved or doubled: a grid sized for
  * other radii makes each look at many more cells, or many more
  * primordia, than needed.
  */
