@@ -6,7 +6,10 @@
 #   blender -b --factory-startup --python blender-render.py -- \
 #       IMPORT.py OUT.png sunflower|coneflower
 # Organs follow phyllo-export's convention: built at the origin, outward
-# along +X, up along +Z, of unit size.
+# along +X, up along +Z, of unit size.  With --obj DIR instead of
+# IMPORT.py OUT.png, the organ models are written to DIR as Wavefront
+# OBJ files with their .mtl colours, as Blender's OBJ export writes them
+# (Y up, so outward +X, up +Y), for --gltf's organs.mesh: scenes/organs.
 import math
 import runpy
 import sys
@@ -15,6 +18,7 @@ import bmesh
 import bpy
 
 script, out, kind = sys.argv[sys.argv.index("--") + 1:][:3]
+obj_dir = out if script == "--obj" else None
 bpy.ops.wm.read_factory_settings(use_empty=True)
 
 
@@ -172,6 +176,17 @@ else:
                                   (0, 1.2))) + [(0.3, -0.1)],
             (0.35, 0.30, 0.10))
     revolve("Stem", [(0.12, 0.05), (0.12, -3)], (0.25, 0.42, 0.12))
+
+if obj_dir is not None:
+    for ob in stash.objects:
+        bpy.ops.object.select_all(action="DESELECT")
+        ob.select_set(True)
+        path = "%s/%s.obj" % (obj_dir, ob.name.lower())
+        bpy.ops.wm.obj_export(filepath=path, export_selected_objects=True,
+                              forward_axis="NEGATIVE_Z", up_axis="Y",
+                              export_uv=False)
+        print("blender-render: wrote %s" % path)
+    sys.exit(0)
 
 runpy.run_path(script, run_name="__main__")
 

@@ -43,6 +43,7 @@ static const struct row area_rows[] = {
 	[AR_RADIUS] = { .name = "radius", .type = T_EXPR, .off = A(radius),
 	  .defstr = "none",
 	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .unit = "length",
 	  .doc = "radius of organ n; its hexagonal cell's area is its share" },
 	[AR_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
 	  .off = A(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
@@ -232,7 +233,8 @@ place_area(const struct scene *sc, const struct area *P, struct result *res,
 	result_info(res, "area", 1, cv.area);
 	if (count > 0)
 		result_info(res, "radius", 2, rmin, rmax);
-	result_info(res, "receptacle", 2, cv.length, cv.rho_max);
+	result_info_labelled(res, "receptacle", "length radius", 2, cv.length,
+	    cv.rho_max);
 	free(sh);
 	curve_free(&cv);
 	return 0;

@@ -62,11 +62,13 @@ static const struct row collision_rows[] = {
 	[CO_RADIUS] = { .name = "radius", .type = T_EXPR, .off = CO(radius),
 	  .defstr = "none",
 	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .unit = "length",
 	  .doc = "radius of primordium n" },
 	[CO_EPSILON] = { .name = "epsilon", .type = T_EXPR,
 	  .off = CO(epsilon), .defstr = "none",
 	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T) |
 	  EXPR_VAR(V_R),
+	  .unit = "length",
 	  .doc = "arc length t may fall back below the last primordium; "
 	  "\"r\": its radius" },
 	[CO_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
@@ -992,7 +994,8 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 		    "receptacle; set count to place more", COUNT_DEFAULT);
 	fill_result(&C, alpha, res);
 	result_info(res, "primordia", 1, (double)C.n);
-	result_info(res, "receptacle", 2, C.cv.length, C.cv.rho_max);
+	result_info_labelled(res, "receptacle", "length radius", 2,
+	    C.cv.length, C.cv.rho_max);
 	if (how == PLACE_CHECK) {
 		result_info(res, "refine misses", 2, (double)C.refine_misses,
 		    (double)C.refined);

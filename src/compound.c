@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "compound.h"
 #include "diag.h"
@@ -28,7 +29,7 @@ struct chain {
 
 struct loader {
 	struct compound	*C;
-	const struct frame *fr;
+	const struct loading *ld;
 	int		(*check)(const struct scene *);
 };
 
@@ -41,9 +42,8 @@ find_part(const struct compound *C, const char *object)
 	return NULL;
 }
 
-/* rel taken relative to the directory of the scene file naming it. */
-static char *
-resolve(const char *from, const char *rel)
+char *
+compound_resolve(const char *from, const char *rel)
 {
 	const char *slash = strrchr(from, '/');
 	size_t dir = slash != NULL && strcmp(from, "<stdin>") != 0 ?
@@ -92,7 +92,7 @@ load_parts(struct loader *L, struct part *p, const struct chain *me)
 
 		if (sc->object_scene[j] == NULL)
 			continue;
-		path = resolve(p->file, sc->object_scene[j]);
+		path = compound_resolve(p->file, sc->object_scene[j]);
 		had = find_part(L->C, name);
 		if (had != NULL) {
 			struct stat a, b;
@@ -129,10 +129,19 @@ load(struct loader *L, const char *path, const char *object,
 	int depth = 0, loaded;
 
 	if (up != NULL) {
-		if (stat(path, &st) != 0) {
+		/*
+		 * A part that cannot be read is an error in the scene naming
+		 * it (exit 1), wherever the reason lies; and a FIFO would
+		 * wait for a writer for ever.
+		 */
+		const char *why = stat(path, &st) != 0 ? strerror(errno) :
+		    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
+		    !S_ISREG(st.st_mode) ? "not a regular file" :
+		    access(path, R_OK) != 0 ? strerror(errno) : NULL;
+
+		if (why != NULL) {
 			diag(ST_SCENE, up->file, line, 0, "scene file %s of "
-			    "organ object \"%s\": %s", path, object,
-			    strerror(errno));
+			    "organ object \"%s\": %s", path, object, why);
 			return -1;
 		}
 		me.dev = st.st_dev;
@@ -166,7 +175,7 @@ load(struct loader *L, const char *path, const char *object,
 	snprintf(p->object, sizeof(p->object), "%s", object);
 	p->from = up != NULL ? up->file : NULL;
 	p->from_line = line;
-	loaded = scene_load_frame(&p->sc, p->file, L->fr) == 0;
+	loaded = scene_load_as(&p->sc, p->file, object, L->ld) == 0;
 	if (loaded)
 		me.file = p->sc.file;		/* "<stdin>" for "-" */
 	if (!loaded ||
@@ -223,10 +232,10 @@ names_agree(const struct compound *C)
 }
 
 int
-compound_load(struct compound *C, const char *path, const struct frame *fr,
+compound_load(struct compound *C, const char *path, const struct loading *ld,
     int (*check)(const struct scene *))
 {
-	struct loader L = { C, fr, check };
+	struct loader L = { C, ld, check };
 
 	*C = (struct compound){ NULL, 0 };
 	if (load(&L, path, "", NULL, 0) != 0)

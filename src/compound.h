@@ -29,15 +29,19 @@ struct compound {
 };
 
 /*
- * Load the scene at path and every scene it includes, for frame fr
- * (NULL: 1 of 1), checking each with check (a writer's, or NULL).
- * 0, or -1 after a diagnostic; the compound is to be freed either way.
+ * Load the scene at path and every scene it includes as ld says (NULL:
+ * frame 1 of 1, nothing changed), checking each with check (a writer's,
+ * or NULL).  0, or -1 after a diagnostic; the compound is to be freed
+ * either way.
  */
 int	compound_load(struct compound *, const char *path,
-	    const struct frame *fr, int (*check)(const struct scene *));
+	    const struct loading *ld, int (*check)(const struct scene *));
 /* Run every model, parts first, and link the parts; 0 or -1. */
 int	compound_run(struct compound *, const struct frame *fr);
 void	compound_free(struct compound *);
+/* rel taken relative to the directory of the scene file from, which
+ * names it; allocated. */
+char	*compound_resolve(const char *from, const char *rel);
 
 static inline const struct result *
 compound_main(const struct compound *c)

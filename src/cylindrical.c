@@ -35,15 +35,18 @@ static const struct row cylindrical_rows[] = {
 	[CY_RADIUS] = { .name = "radius", .type = T_EXPR, .off = C(radius),
 	  .defstr = "1",
 	  .vars = EXPR_VAR(V_N) | EXPR_VAR(V_COUNT) | EXPR_VAR(V_T),
+	  .unit = "length",
 	  .doc = "radius of the cylinder; an expression of t tapers it" },
 	[CY_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
 	  .off = C(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
 	  .doc = "contact parastichy pair [m, n] or triple [m, n, m+n]" },
 	[CY_RISE] = { .name = "rise", .type = T_FLOAT, .off = C(rise),
 	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .unit = "length",
 	  .doc = "height between consecutive organs, for radius 1" },
 	[CY_LENGTH] = { .name = "length", .type = T_FLOAT, .off = C(length),
 	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .unit = "length",
 	  .doc = "length of the structure instead of count" },
 };
 

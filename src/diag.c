@@ -6,6 +6,22 @@
 
 const char *diag_progname = "phyllo-export";
 static enum status worst = ST_OK;
+static char context[128];
+static const char *const *set_args;
+static int nset;
+
+void
+diag_overrides(const char *const *args, int n)
+{
+	set_args = args;
+	nset = n;
+}
+
+void
+diag_context(const char *what)
+{
+	snprintf(context, sizeof(context), "%s", what != NULL ? what : "");
+}
 
 void
 diag(enum status st, const char *file, int line, int col, const char *fmt, ...)
@@ -13,7 +29,9 @@ diag(enum status st, const char *file, int line, int col, const char *fmt, ...)
 	va_list ap;
 
 	fprintf(stderr, "%s: ", diag_progname);
-	if (file != NULL) {
+	if (line >= DIAG_LINE_SET && line - DIAG_LINE_SET < nset)
+		fprintf(stderr, "--set %s: ", set_args[line - DIAG_LINE_SET]);
+	else if (file != NULL) {
 		fputs(file, stderr);
 		if (line > 0)
 			fprintf(stderr, ":%d", line);
@@ -23,6 +41,8 @@ diag(enum status st, const char *file, int line, int col, const char *fmt, ...)
 	}
 	if (st == ST_OK)
 		fputs("warning: ", stderr);
+	if (context[0] != '\0')
+		fprintf(stderr, "%s: ", context);
 	va_start(ap, fmt);
 	vfprintf(stderr, fmt, ap);
 	va_end(ap);

@@ -23,6 +23,21 @@ void	 diag(enum status st, const char *file, int line, int col,
 	    ;
 enum status diag_status(void);
 
+/*
+ * While set, every message names this after its position ("frame 3 of
+ * 10 (f = 0.222222222)"); NULL clears it.  The text is copied.
+ */
+void	 diag_context(const char *);
+
+/*
+ * Settings given on the command line (--set PATH=VALUE) are checked as
+ * if written in the scene, at a line past any file's end: line
+ * DIAG_LINE_SET + k stands for the k-th, and a message at it names the
+ * override ("--set planar.scale=0: ...") instead of FILE:LINE.
+ */
+#define DIAG_LINE_SET	(1 << 28)
+void	 diag_overrides(const char *const *args, int n);
+
 /* How to call ourselves in messages: "phyllo-export". */
 extern const char *diag_progname;
 

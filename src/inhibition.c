@@ -62,7 +62,8 @@ static const struct row inhibition_rows[] = {
 	  .doc = "G of the young meristem, fading to growth" },
 	[IN_TRANSIENT] = { .name = "transient", .type = T_FLOAT,
 	  .off = I(transient), .lo = 0, .hi = HUGE_VAL, .def = 30,
-	  .defstr = "30", .doc = "primordia over which start fades; 0: none" },
+	  .defstr = "30", .unit = "primordia",
+	  .doc = "primordia over which start fades; 0: none" },
 	[IN_KERNEL] = { .name = "kernel", .type = T_CHOICE, .off = I(kernel),
 	  .words = kernel_names, .defstr = "power",
 	  .doc = "the inhibition: power (1/d^s) or gaussian (seed 003)" },
@@ -74,9 +75,11 @@ static const struct row inhibition_rows[] = {
 	  .doc = "grown: where the growth took them; vogel: c sqrt(age)" },
 	[IN_OUTER] = { .name = "outer", .type = T_FLOAT, .off = I(outer),
 	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .unit = "length",
 	  .doc = "radius of the oldest primordium; the head is scaled to it" },
 	[IN_DOME] = { .name = "dome", .type = T_FLOAT, .off = I(dome),
 	  .lo = -HUGE_VAL, .hi = HUGE_VAL, .defstr = "0",
+	  .unit = "length",
 	  .doc = "height of the centre above the rim (paraboloid)" },
 };
 

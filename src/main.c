@@ -1,23 +1,24 @@
 /*
- * main.c - the command line.  Parse options, load the scene, run its
- * model, write one format.  Only this file chooses the exit status.
+ * main.c - the command line: parse the options, load the template, and
+ * hand the rest to run() (run.c); show progress on a terminal.  Only
+ * this file chooses the exit status.
  */
+#include <ctype.h>
 #include <errno.h>
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 
-#include "compound.h"
 #include "diag.h"
-#include "flatten.h"
 #include "mem.h"
-#include "phyllo.h"
 #include "model.h"
 #include "output.h"
-#include "scene.h"
+#include "override.h"
+#include "run.h"
 #include "writer.h"
 
 #ifndef SHAREDIR
@@ -25,38 +26,60 @@
 #endif
 
 /*
- * A long placement (the collision model) reports on a terminal, once
- * it has taken half a second: how many are placed and how fast.  The
- * line is rubbed out at the end, leaving the terminal as it was.
+ * A long run reports on a terminal once it has taken half a second: the
+ * primordia a model has placed, then the bytes written.  The line is
+ * rubbed out at the end, leaving the terminal as it was.
  */
-static struct timespec progress_t0;
-static int progress_width;
+static struct timespec status_t0;
+static int status_width;
 
 static double
-progress_seconds(void)
+status_seconds(void)
 {
 	struct timespec now;
 
 	clock_gettime(CLOCK_MONOTONIC, &now);
-	return (double)(now.tv_sec - progress_t0.tv_sec) +
-	    (double)(now.tv_nsec - progress_t0.tv_nsec) / 1e9;
+	return (double)(now.tv_sec - status_t0.tv_sec) +
+	    (double)(now.tv_nsec - status_t0.tv_nsec) / 1e9;
 }
 
 static void
-progress(long long done, int last)
+status_clear(void)
 {
-	double sec = progress_seconds();
+	if (status_width > 0)
+		fprintf(stderr, "\r%*s\r", status_width, "");
+	status_width = 0;
+}
 
-	if (last) {
-		if (progress_width > 0)
-			fprintf(stderr, "\r%*s\r", progress_width, "");
-		progress_width = 0;
-		return;
+static void
+placed(long long done, int last)
+{
+	double sec = status_seconds();
+
+	if (last)
+		status_clear();
+	else if (sec >= 0.5) {
+		status_width = fprintf(stderr, "\r%s: placed %lld primordia, "
+		    "%.0f a second ", diag_progname, done, done / sec) - 1;
+		fflush(stderr);
 	}
-	if (sec < 0.5)
+}
+
+/* Ten times a second at most: a block goes out every 64 KiB. */
+static void
+written(const struct budget *b)
+{
+	static double next = 0.5;
+	char used[32], expected[32];
+	double now = status_seconds();
+
+	if (now < next)
 		return;
-	progress_width = fprintf(stderr, "\r%s: placed %lld primordia, "
-	    "%.0f a second ", diag_progname, done, done / sec) - 1;
+	next = now + 0.1;
+	run_size_words(used, sizeof(used), b->used);
+	run_size_words(expected, sizeof(expected), b->expected);
+	status_width = fprintf(stderr, "\r%s: written %s of about %s ",
+	    diag_progname, used, expected) - 1;
 	fflush(stderr);
 }
 
@@ -69,9 +92,15 @@ struct args {
 	int		 objects;	/* --blender-objects */
 	int		 flatten;	/* --flatten */
 	int		 frames;	/* --frames N, or 0 */
+	double		 max_output;	/* --max-output, bytes; 0: none */
+	struct override	*set;		/* --set, in order */
+	int		 nset;
+	const char	**set_args;	/* their arguments, for messages */
 };
 
 #define FRAMES_MAX	100000
+/* What a run may write unless --max-output says otherwise: 4 GiB. */
+#define MAX_OUTPUT	(4.0 * 1024 * 1024 * 1024)
 
 static void
 usage(FILE *fp)
@@ -82,7 +111,8 @@ usage(FILE *fp)
 	fputs(") [-o FILE]\n"
 	    "                     [--template FILE] [--arrays] "
 	    "[--blender-objects]\n"
-	    "                     [--flatten] [--frames N] SCENE.cfg\n"
+	    "                     [--flatten] [--frames N] [--max-output SIZE]\n"
+	    "                     [--set [OBJECT:]PATH=VALUE ...] SCENE.cfg\n"
 	    "       phyllo-export --help | --version\n", fp);
 }
 
@@ -109,6 +139,15 @@ help(void)
 	    "-o FILE%03d\n"
 	    "                 names one file a frame (--blender: one script "
 	    "animating them)\n"
+	    "  --set PATH=VALUE  change or add a setting of the scene, VALUE as "
+	    "the scene\n"
+	    "                 file writes it (count=300, planar.scale=0.05, "
+	    "organs.1.tilt=\"20*f\");\n"
+	    "                 OBJECT:PATH for the scene making organ object "
+	    "OBJECT\n"
+	    "  --max-output SIZE  refuse to write more than SIZE bytes (K, M, "
+	    "G, T: KiB ...;\n"
+	    "                 0: no limit) [4G]\n"
 	    "  -h, --help     show this help\n"
 	    "  -V, --version  show the version\n\n"
 	    "Models (model = \"NAME\"; in the scene file):");
@@ -155,59 +194,36 @@ frames_arg(const char *arg)
 }
 
 /*
- * The file of frame F: pattern with its one %d (flags 0, a width) made
- * F, and %% made %.  Our own expansion, so -o is never a printf format.
- * buf NULL: only check the pattern.  0, or -1 after a diagnostic.
+ * --max-output SIZE: bytes, or a number with K, M, G or T (powers of
+ * 1024, as head -c and truncate -s read them); 0 lifts the limit.
  */
 static int
-frame_path(const char *pattern, int F, char *buf, size_t sz)
+size_arg(const char *arg, double *bytes)
 {
-	static const char *const need = "--frames writes one file a frame: "
-	    "-o needs one %d in the name (head%03d.inc)";
-	char tmp[4096];
-	size_t len = 0;
-	int conversions = 0;
+	static const char units[] = "KMGT";
+	const char *u;
+	char *end;
+	double v;
 
-	if (pattern == NULL) {
-		diag(ST_USAGE, NULL, 0, 0, "%s, not standard output", need);
+	errno = 0;
+	v = strtod(arg, &end);
+	if (end != arg && *end != '\0' && end[1] == '\0' &&
+	    (u = strchr(units, toupper((unsigned char)*end))) != NULL) {
+		v *= pow(1024, (double)(u - units + 1));
+		end++;
+	}
+	if (errno != 0 || end == arg || *end != '\0' || !(v >= 0) ||
+	    !isfinite(v) || !isdigit((unsigned char)arg[0])) {
+		diag(ST_USAGE, NULL, 0, 0, "--max-output %s: give a size in "
+		    "bytes, or with K, M, G or T (4G); 0 for no limit", arg);
 		return -1;
 	}
-	for (const char *p = pattern; *p != '\0'; p++) {
-		int zero = 0, width = 0;
-
-		if (*p != '%' || p[1] == '%') {
-			if (len + 1 < sizeof(tmp))
-				tmp[len++] = *p;
-			p += *p == '%';
-			continue;
-		}
-		if (*++p == '0')
-			zero = *p++ == '0';
-		while (*p >= '0' && *p <= '9' && width < 100)
-			width = width * 10 + (*p++ - '0');
-		if (*p != 'd' || conversions++ > 0) {
-			diag(ST_USAGE, NULL, 0, 0, "-o %s: %s", pattern, need);
-			return -1;
-		}
-		len += (size_t)snprintf(tmp + len, len < sizeof(tmp) ?
-		    sizeof(tmp) - len : 0, zero ? "%0*d" : "%*d", width, F);
-	}
-	if (conversions == 0) {
-		diag(ST_USAGE, NULL, 0, 0, "-o %s: %s", pattern, need);
-		return -1;
-	}
-	if (len >= sizeof(tmp)) {
-		diag(ST_USAGE, NULL, 0, 0, "-o %s: file name too long", pattern);
-		return -1;
-	}
-	tmp[len] = '\0';
-	if (buf != NULL)
-		snprintf(buf, sz, "%s", tmp);
+	*bytes = v;
 	return 0;
 }
 
 /* Long options beyond the writers' own: output, template, arrays, ... */
-enum { OPT_WRITER = 256, NOPTIONS = 8 };
+enum { OPT_WRITER = 256, NOPTIONS = 10 };
 
 static int
 parse(int argc, char *argv[], struct args *a, struct option *longopts)
@@ -227,6 +243,9 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 	longopts[n++] = (struct option){ "flatten", no_argument, NULL, 'f' };
 	longopts[n++] = (struct option){ "frames", required_argument, NULL,
 	    'F' };
+	longopts[n++] = (struct option){ "max-output", required_argument,
+	    NULL, 'M' };
+	longopts[n++] = (struct option){ "set", required_argument, NULL, 's' };
 	longopts[n++] = (struct option){ "help", no_argument, NULL, 'h' };
 	longopts[n++] = (struct option){ "version", no_argument, NULL, 'V' };
 	longopts[n] = (struct option){ NULL, 0, NULL, 0 };
@@ -257,6 +276,16 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 			break;
 		case 'F':
 			if ((a->frames = frames_arg(optarg)) == 0)
+				return ST_USAGE;
+			break;
+		case 'M':
+			if (size_arg(optarg, &a->max_output) != 0)
+				return ST_USAGE;
+			break;
+		case 's':
+			/* argc bounds them: sized once, before the loop. */
+			a->set_args[a->nset] = optarg;
+			if (override_parse(optarg, &a->set[a->nset++]) != 0)
 				return ST_USAGE;
 			break;
 		case ':':
@@ -308,8 +337,13 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 		    writers_with(WITH_FLATTEN));
 		return ST_USAGE;
 	}
+	if (a->frames && a->writer->scenes != NULL) {
+		diag(ST_USAGE, NULL, 0, 0, "--%s gives the scene as written: "
+		    "--frames does not go with it", a->writer->name);
+		return ST_USAGE;
+	}
 	if (a->frames && !(a->writer->opts & TO_ANIMATE) &&
-	    frame_path(a->output, 1, NULL, 0) != 0)
+	    output_frame_path(a->output, 1, NULL, 0) != 0)
 		return ST_USAGE;
 	if (a->template != NULL && a->arrays) {
 		diag(ST_USAGE, NULL, 0, 0, "choose one of --template and "
@@ -337,193 +371,63 @@ parse_args(int argc, char *argv[], struct args *a)
 		nwriters++;
 	/* Sized from the table, so a new format cannot overrun it. */
 	longopts = xcalloc(nwriters + NOPTIONS + 1, sizeof(*longopts));
+	a->set = xcalloc((size_t)argc, sizeof(*a->set));
+	a->set_args = xcalloc((size_t)argc, sizeof(*a->set_args));
 	rc = parse(argc, argv, a, longopts);
 	free(longopts);
+	diag_overrides(a->set_args, a->nset);
 	return rc;
 }
 
-/* The format's template: --template FILE, installed, or built in. */
+/*
+ * The format's template: --template FILE, installed, or built in; path
+ * is left the file's name, or "" for the built-in one.
+ */
 static struct tmpl *
-load_template(const struct args *a)
+load_template(const struct args *a, char *path, size_t sz)
 {
 	const char *name = a->arrays ? a->writer->arrays_tmpl : a->writer->tmpl;
-	char path[4096];
 
-	if (a->template != NULL)
+	if (a->template != NULL) {
+		snprintf(path, sz, "%s", a->template);
 		return tmpl_load(a->template, a->writer->vars);
-	snprintf(path, sizeof(path), "%s/%s", SHAREDIR, name);
+	}
+	snprintf(path, sz, "%s/%s", SHAREDIR, name);
 	if (access(path, R_OK) == 0)
 		return tmpl_load(path, a->writer->vars);
+	path[0] = '\0';
 	return tmpl_builtin(name, a->writer->vars);
-}
-
-/* The structures a template writes, and the merged parts it owns. */
-struct structures {
-	const struct result **all;
-	size_t		 n;
-	struct result	*merged;
-	size_t		 nmerged;
-};
-
-/* Whether the main structure places part p itself. */
-static int
-placed_by_main(const struct result *main, const struct result *p)
-{
-	for (size_t j = 0; main->sub != NULL && j < main->nobjects; j++)
-		if (main->sub[j] == p)
-			return 1;
-	return 0;
-}
-
-/*
- * Every structure of frames c[0 .. nc-1], parts first; the main alone
- * for a template without @@structures.  A writer that nests only one
- * level (TO_SHALLOW) gets the parts the main places, each with its own
- * parts merged into it.
- */
-static void
-structures(const struct args *a, const struct tmpl *t,
-    const struct compound *c, size_t nc, struct structures *L)
-{
-	size_t total = 0;
-
-	for (size_t k = 0; k < nc; k++)
-		total += c[k].n;
-	*L = (struct structures){ xcalloc(total, sizeof(*L->all)), 0,
-	    xcalloc(total, sizeof(*L->merged)), 0 };
-	if (!tmpl_structures(t)) {
-		if (total > nc)
-			diag(ST_OK, NULL, 0, 0, "the template has no "
-			    "@@structures block: the parts of the structure "
-			    "are written as placeholders");
-		for (size_t k = 0; k < nc; k++)
-			L->all[L->n++] = compound_main(&c[k]);
-		return;
-	}
-	for (size_t k = 0; k < nc; k++)
-		for (size_t i = 0; i < c[k].n; i++) {
-			const struct result *r = &c[k].parts[i]->res;
-
-			if (!(a->writer->opts & TO_SHALLOW) || i + 1 == c[k].n)
-				L->all[L->n++] = r;
-			else if (!placed_by_main(compound_main(&c[k]), r))
-				continue;	/* merged into the parts using it */
-			else if (r->sub == NULL)
-				L->all[L->n++] = r;
-			else {
-				flatten_result(r, &L->merged[L->nmerged]);
-				L->all[L->n++] = &L->merged[L->nmerged++];
-			}
-		}
-}
-
-/*
- * Write frames c[0 .. nc-1] to path (NULL: stdout); the file stays a
- * temporary until output_commit().  0, or -1 after a diagnostic.
- */
-static int
-write_file(const struct args *a, const struct tmpl *t, const char *path,
-    const struct compound *c, size_t nc)
-{
-	unsigned opts = (a->objects ? TO_OBJECTS : 0) |
-	    (a->flatten ? TO_FLATTEN : 0);
-	struct sink s;
-	FILE *fp = output_open(path);
-	int rc = 0;
-
-	if (fp == NULL)
-		return -1;
-	sink_init(&s, fp);
-	if (t != NULL) {
-		struct structures L;
-
-		structures(a, t, c, nc, &L);
-		tmpl_write(t, &s, L.all, L.n, opts);
-		for (size_t i = 0; i < L.nmerged; i++)
-			result_free(&L.merged[i]);
-		free(L.merged);
-		free(L.all);
-	} else
-		a->writer->write(&s, compound_main(&c[nc - 1]), opts);
-	if (sink_finish(&s) != 0) {
-		diag(ST_SYSTEM, path ? path : "<stdout>", 0, 0, "%s",
-		    strerror(errno));
-		output_abort();
-		rc = -1;
-	} else
-		rc = output_close();
-	sink_free(&s);
-	return rc;
-}
-
-/* Load and run frame fr of the scene, with everything it includes. */
-static int
-make_frame(const struct args *a, struct compound *c, const struct frame *fr)
-{
-	if (compound_load(c, a->scene, fr, a->writer->check) != 0)
-		return -1;
-	return compound_run(c, fr);
-}
-
-/*
- * Every frame: one file each, or (a format that animates) all in one.
- * Nothing is put in place unless every frame was made and written.
- */
-static void
-run(const struct args *a, const struct tmpl *t)
-{
-	int nframes = a->frames ? a->frames : 1;
-	int together = a->frames && (a->writer->opts & TO_ANIMATE);
-	struct compound *c = xcalloc((size_t)nframes, sizeof(*c));
-	char path[4096];
-	int rc = 0, made = 0;
-
-	for (int F = 1; F <= nframes && rc == 0; F++) {
-		struct frame fr = { F, nframes };
-		struct compound *cf = &c[together ? F - 1 : 0];
-
-		rc = make_frame(a, cf, a->frames ? &fr : NULL);
-		made++;
-		if (rc == 0 && !together)
-			rc = a->frames && frame_path(a->output, F, path,
-			    sizeof(path)) != 0 ? -1 : write_file(a, t,
-			    a->frames ? path : a->output, cf, 1);
-		if (!together)
-			compound_free(cf);
-	}
-	if (rc == 0 && together)
-		rc = write_file(a, t, a->output, c, (size_t)nframes);
-	if (rc == 0)
-		output_commit();
-	else
-		output_abort();
-	for (int k = 0; together && k < made; k++)
-		compound_free(&c[k]);
-	free(c);
 }
 
 int
 main(int argc, char *argv[])
 {
-	struct args a = { NULL, NULL, NULL, NULL, 0, 0, 0, 0 };
+	struct args a = { NULL, NULL, NULL, NULL, 0, 0, 0, 0, MAX_OUTPUT, NULL,
+	    0, NULL };
 	struct tmpl *t = NULL;
+	char path[4096] = "";
 	int st;
 
-	if ((st = parse_args(argc, argv, &a)) < 0) {
-		if (fflush(stdout) != 0) {
-			diag(ST_SYSTEM, "<stdout>", 0, 0, "%s", strerror(errno));
-			return ST_SYSTEM;
-		}
-		return ST_OK;
+	st = parse_args(argc, argv, &a);
+	if (st < 0 && fflush(stdout) != 0)	/* --help, --version */
+		diag(ST_SYSTEM, "<stdout>", 0, 0, "%s", strerror(errno));
+	if (st == 0 && isatty(STDERR_FILENO)) {
+		clock_gettime(CLOCK_MONOTONIC, &status_t0);
+		model_progress = placed;
 	}
-	if (st > 0)
-		return st;
-	if (isatty(STDERR_FILENO)) {
-		clock_gettime(CLOCK_MONOTONIC, &progress_t0);
-		model_progress = progress;
+	if (st == 0 && (a.writer->tmpl == NULL ||
+	    (t = load_template(&a, path, sizeof(path))) != NULL)) {
+		struct job j = { a.writer, t, path[0] ? path : NULL, a.scene,
+		    a.output, (a.objects ? TO_OBJECTS : 0) |
+		    (a.flatten ? TO_FLATTEN : 0), a.frames, a.set, a.nset,
+		    a.max_output, isatty(STDERR_FILENO) ? written : NULL };
+
+		run(&j);
+		status_clear();
 	}
-	if (a.writer->tmpl == NULL || (t = load_template(&a)) != NULL)
-		run(&a, t);
 	tmpl_free(t);
-	return diag_status();
+	diag_overrides(NULL, 0);
+	free(a.set);
+	free(a.set_args);
+	return st > 0 ? st : (int)diag_status();
 }

@@ -26,15 +26,22 @@ struct organ {
 	unsigned	 object;	/* index into result.objects */
 };
 
-/* A model's own facts for --info: "key: v1 v2 ...". */
+/*
+ * A model's own facts for --info: "key: v1 v2 ...", or with labels,
+ * "key: label1 v1; label2 v2".
+ */
 struct info_item {
 	const char	*key;
 	double		 val[6];
 	int		 nval;
 	const char	*text;		/* a word instead of numbers (static) */
+	const char	*labels;	/* one word a value (static), or NULL */
 };
 
 #define INFO_MAX 16
+
+struct flat;
+struct meshes;
 
 /* How the SVG preview shows a structure. */
 enum projection {
@@ -66,6 +73,16 @@ struct result {
 	 * array is owned, the parts are not.  NULL when nothing is a part.
 	 */
 	const struct result **sub;
+	/*
+	 * A view of a compound with its parts opened (flatten.h): organs
+	 * is NULL and the leaves are walked from here; owned.
+	 */
+	struct flat	*flat;
+	/*
+	 * The organ objects' meshes (meshes.h), for writers that write
+	 * them: shared by a compound's results; NULL when none were read.
+	 */
+	const struct meshes *meshes;
 	int		 part;		/* this is a part, named for its object */
 	int		 frame, frames;	/* F of how many (--frames); 1 of 1 */
 	double		 frame_f;	/* f: 0 .. 1 over the frames */
@@ -83,5 +100,8 @@ void	result_init(struct result *, size_t count);
 void	result_free(struct result *);
 void	result_info(struct result *, const char *key, int nval, ...);
 void	result_info_text(struct result *, const char *key, const char *text);
+/* A fact of values each with its label: labels "length radius". */
+void	result_info_labelled(struct result *, const char *key,
+	    const char *labels, int nval, ...);
 
 #endif

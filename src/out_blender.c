@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "diag.h"
+#include "flatten.h"
 #include "mem.h"
 #include "writer.h"
 
@@ -101,31 +102,65 @@ by_object(const struct result *r)
 	return order;
 }
 
+/* One organ's part of one block: its position, rotation or scale. */
+struct block {
+	struct b64	*b;
+	int		 which;
+};
+
+static void
+block_organ(void *ctx, const struct organ *o)
+{
+	struct block *k = ctx;
+	double e[3];
+
+	if (k->which == 0)
+		for (int j = 0; j < 3; j++)
+			b64_float(k->b, o->pos[j]);
+	else if (k->which == 1) {
+		euler_xyz(o, e);
+		for (int j = 0; j < 3; j++)
+			b64_float(k->b, e[j]);
+	} else
+		b64_float(k->b, o->scale);
+}
+
+/*
+ * A view's leaves are walked once per block and object (a walk skips
+ * parts without the object), so that no array of them is made.
+ */
 static void
 put_data(struct sink *s, const struct tmpl_ctx *c)
 {
 	struct b64 b = { s, { 0 }, 0, 0 };
-	uint32_t *order = by_object(c->r);
+	uint32_t *order = c->r->flat == NULL ? by_object(c->r) : NULL;
 
 	sink_putc(s, '"');
-	for (int block = 0; block < 3; block++)
-		for (size_t i = 0; i < c->r->count; i++) {
-			const struct organ *o = &c->r->organs[order[i]];
-			double e[3];
+	for (int which = 0; which < 3; which++) {
+		struct block k = { &b, which };
 
-			if (block == 0)
-				for (int j = 0; j < 3; j++)
-					b64_float(&b, o->pos[j]);
-			else if (block == 1) {
-				euler_xyz(o, e);
-				for (int j = 0; j < 3; j++)
-					b64_float(&b, e[j]);
-			} else
-				b64_float(&b, o->scale);
-		}
+		if (order == NULL)
+			for (size_t j = 0; j < c->r->nobjects; j++)
+				result_each(c->r, j, block_organ, &k);
+		else
+			for (size_t i = 0; i < c->r->count; i++)
+				block_organ(&k, &c->r->organs[order[i]]);
+	}
 	b64_flush(&b, 1);
 	sink_putc(s, '"');
 	free(order);
+}
+
+/*
+ * What put_data() writes, from the count alone: two quotes, base64 of
+ * 28 bytes an organ, and a line break of 7 bytes every 1000 characters.
+ */
+static double
+data_size(const struct tmpl_ctx *c)
+{
+	double chars = 4 * ceil(28 * (double)c->r->count / 3);
+
+	return 2 + chars + (chars > 0 ? floor((chars - 1) / 1000) * 7 : 0);
 }
 
 /* True with --blender-objects: linked duplicates, not instances. */
@@ -136,8 +171,8 @@ put_linked(struct sink *s, const struct tmpl_ctx *c)
 }
 
 const struct tmpl_var blender_vars[] = {
-	{ "DATA", TS_GLOBAL, put_data },
-	{ "LINKED", TS_GLOBAL, put_linked },
-	{ NULL, 0, NULL }
+	{ "DATA", TS_GLOBAL, put_data, data_size },
+	{ "LINKED", TS_GLOBAL, put_linked, NULL },
+	{ NULL, 0, NULL, NULL }
 };
 

@@ -1,9 +1,30 @@
 /* out_info.c - "key: value" lines about the result, for people and scripts. */
 #include <math.h>
+#include <string.h>
 
 #include "flatten.h"
 #include "parastichy.h"
+#include "plan.h"
 #include "writer.h"
+
+/* "key: label v; label v", a label a value (labels: words). */
+static void
+labelled(struct sink *s, const char *key, const char *labels, int n,
+    const double *v)
+{
+	sink_puts(s, key);
+	sink_putc(s, ':');
+	for (int i = 0; i < n && *labels != '\0'; i++) {
+		size_t len = strcspn(labels, " ");
+
+		sink_puts(s, i ? "; " : " ");
+		sink_write(s, labels, len);
+		sink_putc(s, ' ');
+		sink_num(s, v[i]);
+		labels += len + (labels[len] == ' ');
+	}
+	sink_putc(s, '\n');
+}
 
 static void
 line(struct sink *s, const char *key, int n, const double *v)
@@ -64,7 +85,7 @@ convergents(struct sink *s, const struct result *r)
 static void
 parts(struct sink *s, const struct result *r)
 {
-	double leaves = (double)flatten_count(r);
+	double leaves = flatten_leaves(r);
 	int first = 1;
 
 	sink_puts(s, "parts:");
@@ -79,6 +100,66 @@ parts(struct sink *s, const struct result *r)
 	}
 	sink_putc(s, '\n');
 	line(s, "leaves", 1, &leaves);
+}
+
+/* x to three significant digits: an estimate has no more. */
+static double
+rounded(double x)
+{
+	double unit = x >= 100 ? pow(10, floor(log10(x)) - 2) : 1;
+
+	return round(x / unit) * unit;
+}
+
+static void
+size_item(struct sink *s, int *first, const char *name, double bytes)
+{
+	sink_puts(s, *first ? " " : "; ");
+	sink_puts(s, name);
+	sink_putc(s, ' ');
+	sink_num(s, rounded(bytes));
+	*first = 0;
+}
+
+/*
+ * "output-bytes: pov 26100; blender 12400; ...": what each format would
+ * write of this structure, by its default template, as the size limit
+ * (--max-output) reckons it.
+ */
+static void
+sizes(struct sink *s, const struct result *r)
+{
+	int first = 1;
+
+	sink_puts(s, "output-bytes:");
+	for (const struct writer *w = writers; w->name != NULL; w++) {
+		struct tmpl *t = w->tmpl != NULL ?
+		    tmpl_builtin(w->tmpl, w->vars) : NULL;
+		struct plan P;
+
+		/* Not itself, nor what writes the scene instead of organs. */
+		if (w->write == info_write || w->scenes != NULL ||
+		    (w->tmpl != NULL && t == NULL))
+			continue;
+		plan_make(&P, w, t, r);
+		size_item(s, &first, w->name, plan_bytes(&P, w, t, TMPL_ALL,
+		    0));
+		if ((w->opts & TO_FLATTEN) && r->sub != NULL)
+			size_item(s, &first, "csv-flatten", plan_bytes(&P, w, t,
+			    TMPL_ALL, TO_FLATTEN));
+		plan_free(&P);
+		tmpl_free(t);
+	}
+	sink_putc(s, '\n');
+}
+
+/* A few lines, and a zone a line at most. */
+double
+info_bytes(const struct result *r, unsigned opts)
+{
+	(void)r;
+	(void)opts;
+	return 16384;
 }
 
 void
@@ -101,8 +182,19 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 			box[j] = fmin(box[j], r->organs[i].pos[j]);
 			box[j + 3] = fmax(box[j + 3], r->organs[i].pos[j]);
 		}
-	if (r->count > 0)
-		line(s, "bbox", 6, box);
+	if (r->count > 0) {
+		/* Each axis's smallest and largest organ centre. */
+		sink_puts(s, "bbox:");
+		for (int j = 0; j < 3; j++) {
+			sink_puts(s, j ? "; " : " ");
+			sink_putc(s, "xyz"[j]);
+			sink_putc(s, ' ');
+			sink_num(s, box[j]);
+			sink_putc(s, ' ');
+			sink_num(s, box[j + 3]);
+		}
+		sink_putc(s, '\n');
+	}
 	sink_puts(s, "objects:");
 	for (size_t i = 0; i < r->nobjects; i++) {
 		sink_putc(s, ' ');
@@ -111,14 +203,19 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 	sink_putc(s, '\n');
 	if (r->sub != NULL)
 		parts(s, r);
+	sizes(s, r);
 	if (r->frames > 1) {
 		double fr[3] = { r->frame, r->frames, r->frame_f };
 
-		line(s, "frame", 3, fr);
+		labelled(s, "frame", "F of f", 3, fr);
 	}
 	for (int i = 0; i < r->ninfo; i++) {
 		const struct info_item *it = &r->info[i];
 
+		if (it->labels != NULL) {
+			labelled(s, it->key, it->labels, it->nval, it->val);
+			continue;
+		}
 		if (it->text == NULL) {
 			line(s, it->key, it->nval, it->val);
 			continue;
@@ -158,20 +255,9 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 	}
 	convergents(s, r);
 	if (r->rays > 0) {
-		/* Spokes instead of spirals: rarely what was meant. */
+		/* Spokes instead of spirals: run() warns of it too. */
 		double rays = (double)r->rays;
 
 		line(s, "rays", 1, &rays);
-		sink_puts(s, "warning: divergence ");
-		sink_num(s, r->divergence);
-		sink_puts(s, " is ");
-		sink_uint(s, (unsigned long long)r->rays_p);
-		sink_putc(s, '/');
-		sink_uint(s, (unsigned long long)r->rays);
-		sink_puts(s, " of a turn: from organ ");
-		sink_uint(s, (unsigned long long)r->rays);
-		sink_puts(s, " on, organs line up on ");
-		sink_uint(s, (unsigned long long)r->rays);
-		sink_puts(s, " rays instead of spirals\n");
 	}
 }

@@ -84,13 +84,13 @@ put_colour(struct sink *s, const struct tmpl_ctx *c)
 }
 
 const struct tmpl_var pov_vars[] = {
-	{ "MATRIX", TS_ORGAN, put_matrix },
-	{ "POS", TS_ORGAN, put_pos },
-	{ "U", TS_ORGAN, put_u },
-	{ "V", TS_ORGAN, put_v },
-	{ "W", TS_ORGAN, put_w },
-	{ "COLOR", TS_OBJECT | TS_ORGAN, put_colour },
-	{ NULL, 0, NULL }
+	{ "MATRIX", TS_ORGAN, put_matrix, NULL },
+	{ "POS", TS_ORGAN, put_pos, NULL },
+	{ "U", TS_ORGAN, put_u, NULL },
+	{ "V", TS_ORGAN, put_v, NULL },
+	{ "W", TS_ORGAN, put_w, NULL },
+	{ "COLOR", TS_OBJECT | TS_ORGAN, put_colour, NULL },
+	{ NULL, 0, NULL, NULL }
 };
 
 /* Names POV-Ray would read as its own words. */

@@ -4,10 +4,29 @@
 
 #include <stdio.h>
 
-/* One file at a time; each stays a temporary until output_commit(). */
+/*
+ * A file the run reads (what: "the scene file", "the template"), which
+ * -o must never name, by any path or link.  Remembered until exit.
+ */
+void	 output_input(const char *path, const char *what);
+/* 0 if -o path names no input; else -1 after a usage error. */
+int	 output_check(const char *path);
+
+/*
+ * One file at a time; each stays a temporary until output_commit().
+ * Through a symbolic link the link's target is written; an existing
+ * file keeps its permissions.
+ */
 FILE	*output_open(const char *path);
 int	 output_close(void);
 int	 output_commit(void);
 void	 output_abort(void);
+
+/*
+ * The file of frame F: pattern with its one %d (flags 0, a width) made
+ * F, and %% made %.  buf NULL: only check the pattern.  0, or -1 after
+ * a usage error.
+ */
+int	 output_frame_path(const char *pattern, int F, char *buf, size_t sz);
 
 #endif

@@ -29,19 +29,23 @@ struct planar {
 static const struct row planar_rows[] = {
 	[PL_SCALE] = { .name = "scale", .type = T_FLOAT, .off = P(scale),
 	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .def = 1,
-	  .defstr = "1",
+	  .defstr = "none",
+	  .unit = "length",
 	  .doc = "Vogel's c: organ n lies at radius c n^exponent" },
 	[PL_OUTER] = { .name = "outer", .type = T_FLOAT, .off = P(outer),
-	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "inner + 1",
+	  .unit = "length",
 	  .doc = "radius of the last organ; sets c instead of scale" },
 	[PL_INNER] = { .name = "inner", .type = T_FLOAT, .off = P(inner),
 	  .lo = 0, .hi = HUGE_VAL, .defstr = "0",
+	  .unit = "length",
 	  .doc = "radius at which organ 0 sits" },
 	[PL_EXPONENT] = { .name = "exponent", .type = T_FLOAT,
 	  .off = P(exponent), .lo = 0, .hi = 4, .flags = F_LO_OPEN,
 	  .def = 0.5, .defstr = "0.5", .doc = "exponent of n in the radius" },
 	[PL_DOME] = { .name = "dome", .type = T_FLOAT, .off = P(dome),
 	  .lo = -HUGE_VAL, .hi = HUGE_VAL, .defstr = "0",
+	  .unit = "length",
 	  .doc = "height of the centre above the rim (paraboloid)" },
 	[PL_PARASTICHIES] = { .name = "parastichies", .type = T_INTS,
 	  .off = P(parastichies), .lo = 1, .hi = 1000, .defstr = "none",
@@ -87,12 +91,17 @@ static int
 place(const struct scene *sc, const struct planar *p, size_t count,
     struct result *res)
 {
+	/*
+	 * Without scale or outer, the last organ lies one unit out from
+	 * inner: a head of radius 1 whatever the count, as the other
+	 * models' receptacles are, rather than sqrt(count) units.
+	 */
+	double outer = p->given[PL_OUTER] ? p->outer : p->inner + 1;
 	double c = p->scale, rim, kdome;
 
-	if (p->given[PL_OUTER])
-		c = count > 1 ? (p->outer - p->inner) /
-		    pow((double)(count - 1), p->exponent) :
-		    p->outer - p->inner;
+	if (!p->given[PL_SCALE])
+		c = count > 1 ? (outer - p->inner) /
+		    pow((double)(count - 1), p->exponent) : outer - p->inner;
 	rim = p->inner + c * power((double)(count - 1), p->exponent);
 	/* z = dome * (1 - (rho/rim)^2), so dz/drho = -kdome * rho. */
 	kdome = rim > 0 ? 2 * p->dome / (rim * rim) : 0;

@@ -34,9 +34,11 @@ static const struct row receptacle_rows[] = {
 	  .doc = "a preset receptacle instead of a profile" },
 	[RC_RADIUS] = { .name = "radius", .type = T_FLOAT, .off = RC(radius),
 	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .def = 1,
-	  .defstr = "1", .doc = "radius of the preset at its widest" },
+	  .defstr = "1", .unit = "length",
+	  .doc = "radius of the preset at its widest" },
 	[RC_HEIGHT] = { .name = "height", .type = T_FLOAT, .off = RC(height),
 	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "per shape",
+	  .unit = "length",
 	  .doc = "height of the cone, cylinder, ellipsoid or cap" },
 };
 

@@ -2,6 +2,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 
+#include "flatten.h"
 #include "mem.h"
 #include "organ.h"
 
@@ -20,6 +21,7 @@ result_free(struct result *r)
 	free(r->source);
 	free(r->objects);
 	free(r->sub);
+	flat_free(r->flat);
 	*r = (struct result){0};
 }
 
@@ -35,6 +37,23 @@ result_info(struct result *r, const char *key, int nval, ...)
 	it = &r->info[r->ninfo++];
 	it->key = key;
 	it->nval = nval;
+	va_start(ap, nval);
+	for (int i = 0; i < nval; i++)
+		it->val[i] = va_arg(ap, double);
+	va_end(ap);
+}
+
+void
+result_info_labelled(struct result *r, const char *key, const char *labels,
+    int nval, ...)
+{
+	struct info_item *it;
+	va_list ap;
+
+	if (r->ninfo >= INFO_MAX || nval > 6)
+		abort();
+	it = &r->info[r->ninfo++];
+	*it = (struct info_item){ .key = key, .nval = nval, .labels = labels };
 	va_start(ap, nval);
 	for (int i = 0; i < nval; i++)
 		it->val[i] = va_arg(ap, double);

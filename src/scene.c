@@ -18,13 +18,18 @@
 #include "diag.h"
 #include "mem.h"
 #include "model.h"
+#include "override.h"
 #include "scene.h"
 #include "settings.h"
+#include "suggest.h"
 
 struct load {
 	struct scene	*sc;
 	const char	*file;
+	const char	*text;		/* the file as written, for columns */
+	size_t		 len;
 	struct expr_const consts[3];	/* f and F, for every expression */
+	int		 record;	/* keep each setting as written */
 };
 
 
@@ -60,6 +65,33 @@ err_at(const struct load *L, const config_setting_t *s, const char *fmt, ...)
 	vsnprintf(msg, sizeof(msg), fmt, ap);
 	va_end(ap);
 	diag(ST_SCENE, file_of(L, s), line_of(s), 0, "%s", msg);
+}
+
+/*
+ * An error at byte col (from 1) of setting s's string value, as a
+ * compiler gives it: at the line and column of that byte in the file,
+ * so that an editor jumps to it.  Where the file does not show the
+ * value plainly (an @include), at the setting's line.
+ */
+static void
+err_in_string(const struct load *L, const config_setting_t *s, int col,
+    const char *path, const char *msg, const char *hint)
+{
+	const config_setting_t *named = s;
+	int elem = -1, line, at = 0;
+
+	if (config_setting_name(s) == NULL &&
+	    (named = config_setting_parent(s)) != NULL)
+		elem = config_setting_index(s);
+	line = named != NULL ? line_of(named) : 0;
+	if (named == NULL || config_setting_name(named) == NULL ||
+	    strcmp(file_of(L, s), L->file) != 0 || col < 1 ||
+	    cfgtext_locate(L->text, L->len, config_setting_name(named), elem,
+	    config_setting_get_string(s), (size_t)col - 1, &line, &at) != 0) {
+		line = line_of(s);
+		at = 0;
+	}
+	diag(ST_SCENE, file_of(L, s), line, at, "%s: %s%s", path, msg, hint);
 }
 
 static int
@@ -144,8 +176,8 @@ set_number_expr(struct load *L, const config_setting_t *s,
 	double v = 0;
 
 	if (e == NULL) {
-		diag(ST_SCENE, file_of(L, s), line_of(s), err.col, "%s: %s%s",
-		    path, err.msg, strstr(err.msg, "variable") ?
+		err_in_string(L, s, err.col, path, err.msg,
+		    strstr(err.msg, "variable") ?
 		    " (a number's expression may use only f and F)" : "");
 		return -1;
 	}
@@ -236,14 +268,19 @@ set_choice(struct load *L, const config_setting_t *s, const char *path,
 		err_at(L, s, "%s must be a string", path);
 		return -1;
 	}
-	for (int i = 0; words[i] != NULL; i++)
-		if (strcmp(v, words[i]) == 0) {
-			*dst = i;
+	size_t n = 0;
+	const char *near;
+
+	for (; words[n] != NULL; n++)
+		if (strcmp(v, words[n]) == 0) {
+			*dst = (int)n;
 			return 0;
 		}
 	cfgtext_quote(q, sizeof(q), v);
 	words_join(list, sizeof(list), words);
-	err_at(L, s, "%s \"%s\" is not one of: %s", path, q, list);
+	near = suggest(v, words, n);
+	err_at(L, s, "%s \"%s\" is not one of: %s%s%s%s", path, q, list,
+	    near ? " (did you mean " : "", near ? near : "", near ? "?)" : "");
 	return -1;
 }
 
@@ -372,8 +409,7 @@ set_expr(struct load *L, const config_setting_t *s, const struct row *r,
 	}
 	if ((dst->e = expr_compile_with(src, r->vars, L->consts,
 	    &err)) == NULL) {
-		diag(ST_SCENE, file_of(L, s), line_of(s), err.col, "%s: %s",
-		    path, err.msg);
+		err_in_string(L, s, err.col, path, err.msg, "");
 		return -1;
 	}
 	return 0;
@@ -411,10 +447,10 @@ set_names(struct load *L, const config_setting_t *s, const char *path,
 	return 0;
 }
 
-/* A scene file's name, or an array of them: what each variant is made of. */
+/* A file's name, or an array of them: one for each variant. */
 static int
 set_files(struct load *L, const config_setting_t *s, const char *path,
-    struct organ_range *rg)
+    struct file_list *fl)
 {
 	int list = config_setting_type(s) == CONFIG_TYPE_ARRAY ||
 	    config_setting_type(s) == CONFIG_TYPE_LIST;
@@ -430,8 +466,8 @@ set_files(struct load *L, const config_setting_t *s, const char *path,
 		    VARIANTS_MAX, n);
 		return -1;
 	}
-	rg->scenes = xcalloc((size_t)n, sizeof(*rg->scenes));
-	rg->nscenes = (size_t)n;
+	fl->v = xcalloc((size_t)n, sizeof(*fl->v));
+	fl->n = (size_t)n;
 	for (int i = 0; i < n; i++) {
 		const config_setting_t *e = list ?
 		    config_setting_get_elem(s, (unsigned)i) : s;
@@ -443,7 +479,7 @@ set_files(struct load *L, const config_setting_t *s, const char *path,
 			    "a file name, not \"\"" : "a shorter file name");
 			return -1;
 		}
-		rg->scenes[i] = xstrdup(v);
+		fl->v[i] = xstrdup(v);
 	}
 	return 0;
 }
@@ -511,6 +547,26 @@ set_defaults(const struct table *tab, void *base)
 	}
 }
 
+/*
+ * Name the struct base described by tab path, and its nested groups
+ * path.name: where they are not written, a message about them still
+ * says where ("give area.receptacle.profile or ...").
+ */
+static void
+set_paths(const struct table *tab, void *base, const char *path)
+{
+	snprintf(at_of(tab, base)->path, PATH_LEN, "%s", path);
+	for (size_t i = 0; i < tab->n; i++) {
+		const struct row *r = &tab->rows[i];
+		char sub[PATH_LEN];
+
+		if (r->type != T_GROUP)
+			continue;
+		snprintf(sub, sizeof(sub), "%s.%s", path, r->name);
+		set_paths(r->sub, (char *)base + r->off, sub);
+	}
+}
+
 /* Free what the settings of a struct own, in nested groups too. */
 static void
 free_settings(const struct table *tab, void *base)
@@ -526,6 +582,19 @@ free_settings(const struct table *tab, void *base)
 		else if (r->type == T_GROUP)
 			free_settings(r->sub, dst);
 	}
+}
+
+/* An entry's scene or mesh files: one for each of its objects. */
+static int
+files_per_name(const struct load *L, const struct organ_range *rg,
+    const struct file_list *fl, int id, const char *path, const char *name)
+{
+	if (fl->v == NULL || fl->n == rg->nnames)
+		return 0;
+	diag(ST_SCENE, L->file, rg->given[id], 0, "%s.%s lists %zu file%s "
+	    "for %zu objects: one each", path, name, fl->n, fl->n == 1 ? "" :
+	    "s", rg->nnames);
+	return -1;
 }
 
 static int
@@ -563,11 +632,16 @@ load_ranges(struct load *L, const config_setting_t *s, const char *path,
 			strcpy(rg->names[0], "Organ");
 			rg->nnames = 1;
 		}
-		if (rg->scenes != NULL && rg->nscenes != rg->nnames) {
-			diag(ST_SCENE, L->file, rg->given[RG_SCENE], 0,
-			    "%s.scene lists %zu file%s for %zu objects: one "
-			    "each", path, rg->nscenes, rg->nscenes == 1 ? "" :
-			    "s", rg->nnames);
+		if (files_per_name(L, rg, &rg->scenes, RG_SCENE, path,
+		    "scene") != 0 || files_per_name(L, rg, &rg->meshes,
+		    RG_MESH, path, "mesh") != 0)
+			return -1;
+		for (size_t k = 0; rg->scenes.v != NULL &&
+		    rg->meshes.v != NULL && k < rg->nnames; k++) {
+			diag(ST_SCENE, L->file, rg->given[RG_MESH], 0,
+			    "%s.mesh: organ object \"%s\" is made of a scene, "
+			    "whose own organs have the meshes", path,
+			    rg->names[k]);
 			return -1;
 		}
 	}
@@ -601,8 +675,45 @@ set_model(struct load *L, const config_setting_t *s, const char *path,
 	return 0;
 }
 
+/* Keep setting s as written: its whole path, and its value as text. */
+static void
+record(struct load *L, const config_setting_t *s)
+{
+	struct scene *sc = L->sc;
+	char path[PATH_LEN * 2] = "", part[PATH_LEN * 2];
+
+	for (const config_setting_t *p = s; config_setting_parent(p) != NULL;
+	    p = config_setting_parent(p)) {
+		if (config_setting_name(p) != NULL)
+			snprintf(part, sizeof(part), "%s%s%s",
+			    config_setting_name(p), *path ? "." : "", path);
+		else
+			snprintf(part, sizeof(part), "%d%s%s",
+			    config_setting_index(p), *path ? "." : "", path);
+		memcpy(path, part, sizeof(path));
+	}
+	sc->written = xreallocarray(sc->written, sc->nwritten + 1,
+	    sizeof(*sc->written));
+	sc->written[sc->nwritten++] = (struct written){ xstrdup(path),
+	    cfgtext_value(s), line_of(s) };
+}
+
+static int	load_setting_as(struct load *, const config_setting_t *,
+		    const char *path, const struct row *, void *base);
+
 static int
 load_setting(struct load *L, const config_setting_t *s, const char *path,
+    const struct row *r, void *base)
+{
+	int rc = load_setting_as(L, s, path, r, base);
+
+	if (rc == 0 && L->record && r->type != T_GROUP && r->type != T_RANGES)
+		record(L, s);
+	return rc;
+}
+
+static int
+load_setting_as(struct load *L, const config_setting_t *s, const char *path,
     const struct row *r, void *base)
 {
 	void *dst = (char *)base + r->off;
@@ -629,7 +740,7 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 	case T_WEIGHTS:
 		return set_weights(L, s, r, path, base);
 	case T_FILES:
-		return set_files(L, s, path, base);
+		return set_files(L, s, path, dst);
 	case T_INTS:
 		return set_ints(L, s, r, path, dst);
 	case T_POINTS:
@@ -642,6 +753,29 @@ load_setting(struct load *L, const config_setting_t *s, const char *path,
 		return set_vec3(L, s, r, path, dst);
 	}
 	return -1;
+}
+
+/*
+ * "unknown setting 'planar.scael' (did you mean planar.scale?)": the
+ * nearest of the group's names, and at the top level of the models'.
+ */
+static void
+unknown(const struct load *L, const config_setting_t *s,
+    const struct table *tab, const char *path, const char *sub)
+{
+	const char *words[64 + MODELS_MAX];
+	const char *near;
+	size_t n = 0;
+
+	for (size_t k = 0; k < tab->n && n < 64; k++)
+		words[n++] = tab->rows[k].name;
+	for (const struct model *const *m = models; tab == &scene_table &&
+	    *m != NULL; m++)
+		words[n++] = (*m)->name;
+	near = suggest(config_setting_name(s), words, n);
+	err_at(L, s, "unknown setting '%s'%s%s%s%s%s", sub,
+	    near ? " (did you mean " : "", near ? path : "",
+	    near && *path ? "." : "", near ? near : "", near ? "?)" : "");
 }
 
 /*
@@ -680,7 +814,7 @@ load_group(struct load *L, const config_setting_t *g, const char *path,
 		}
 		m = tab == &scene_table ? model_find(name) : NULL;
 		if (m == NULL) {
-			err_at(L, s, "unknown setting '%s'", sub);
+			unknown(L, s, tab, path, sub);
 			return -1;
 		}
 		if (m != L->sc->model) {
@@ -750,6 +884,34 @@ same_scene(const char *a, const char *b)
 }
 
 /*
+ * Object j's mesh from variant k of entry rg, when it gives one: any
+ * entry naming the object may, and those that do name one file.
+ */
+static int
+set_mesh(struct load *L, const struct organ_range *rg, size_t k, size_t j)
+{
+	struct scene *sc = L->sc;
+	const char *mesh = rg->meshes.v != NULL ? rg->meshes.v[k] : NULL;
+	char here[SCENE_PATH_MAX + 8], there[SCENE_PATH_MAX + 8];
+
+	if (mesh == NULL)
+		return 0;
+	if (sc->object_mesh[j] == NULL) {
+		sc->object_mesh[j] = mesh;
+		sc->object_mesh_line[j] = rg->given[RG_MESH];
+		return 0;
+	}
+	if (strcmp(sc->object_mesh[j], mesh) == 0)
+		return 0;
+	cfgtext_quote(here, sizeof(here), mesh);
+	cfgtext_quote(there, sizeof(there), sc->object_mesh[j]);
+	diag(ST_SCENE, L->file, rg->given[RG_MESH], 0, "organ object \"%s\" "
+	    "has mesh \"%s\" here but \"%s\" on line %d: one name, one thing",
+	    rg->names[k], here, there, sc->object_mesh_line[j]);
+	return -1;
+}
+
+/*
  * Collect the distinct organ object names and number the variants.  An
  * object may not carry the scene's name: both name things in one
  * namespace of POV-Ray and of Blender.
@@ -766,6 +928,9 @@ collect_objects(struct load *L)
 	sc->objects = xcalloc(total + 1, sizeof(*sc->objects));
 	sc->object_scene = xcalloc(total + 1, sizeof(*sc->object_scene));
 	sc->object_line = xcalloc(total + 1, sizeof(*sc->object_line));
+	sc->object_mesh = xcalloc(total + 1, sizeof(*sc->object_mesh));
+	sc->object_mesh_line = xcalloc(total + 1,
+	    sizeof(*sc->object_mesh_line));
 	for (size_t i = 0; i < sc->nranges; i++) {
 		struct organ_range *rg = &sc->ranges[i];
 
@@ -784,16 +949,16 @@ collect_objects(struct load *L)
 					break;
 			if (j == sc->nobjects) {
 				sc->objects[sc->nobjects] = rg->names[k];
-				sc->object_scene[sc->nobjects] = rg->scenes ?
-				    rg->scenes[k] : NULL;
+				sc->object_scene[sc->nobjects] = rg->scenes.v ?
+				    rg->scenes.v[k] : NULL;
 				sc->object_line[sc->nobjects++] = rg->at.line;
 			} else if (!same_scene(sc->object_scene[j],
-			    rg->scenes ? rg->scenes[k] : NULL)) {
+			    rg->scenes.v ? rg->scenes.v[k] : NULL)) {
 				char here[SCENE_PATH_MAX + 32];
 				char there[SCENE_PATH_MAX + 32];
 
-				scene_words(here, sizeof(here), rg->scenes ?
-				    rg->scenes[k] : NULL);
+				scene_words(here, sizeof(here), rg->scenes.v ?
+				    rg->scenes.v[k] : NULL);
 				scene_words(there, sizeof(there),
 				    sc->object_scene[j]);
 				diag(ST_SCENE, L->file, rg->at.line, 0, "organ "
@@ -803,6 +968,8 @@ collect_objects(struct load *L)
 				return -1;
 			}
 			rg->ids[k] = (unsigned)j;
+			if (set_mesh(L, rg, k, j) != 0)
+				return -1;
 		}
 	}
 	if (sc->nobjects == 0)
@@ -830,11 +997,12 @@ load_root(struct load *L, const config_setting_t *root)
 	sc->given[S_MODEL] = line_of(m);
 	if (set_model(L, m, "model", &sc->model) < 0)
 		return -1;
+	if (L->record)
+		record(L, m);
 	model = sc->model;
 	sc->params = xcalloc(1, model->size);
 	set_defaults(model->settings, sc->params);
-	snprintf(at_of(model->settings, sc->params)->path, PATH_LEN, "%s",
-	    model->name);
+	set_paths(model->settings, sc->params, model->name);
 	if (load_group(L, root, "", &scene_table, sc) < 0)
 		return -1;
 	sc->at.line = 1;
@@ -847,14 +1015,16 @@ int
 scene_load_buffer(struct scene *sc, const char *file, const char *text,
     size_t len)
 {
-	return scene_load_buffer_frame(sc, file, text, len, NULL);
+	return scene_load_buffer_as(sc, file, text, len, "", NULL);
 }
 
 int
-scene_load_buffer_frame(struct scene *sc, const char *file,
-    const char *text, size_t len, const struct frame *fr)
+scene_load_buffer_as(struct scene *sc, const char *file, const char *text,
+    size_t len, const char *object, const struct loading *ld)
 {
-	struct load L = { sc, file, { { "f", 0 }, { "F", 1 }, { NULL, 0 } } };
+	const struct frame *fr = ld != NULL ? ld->frame : NULL;
+	struct load L = { sc, file, text, len,
+	    { { "f", 0 }, { "F", 1 }, { NULL, 0 } }, 0 };
 	config_t cfg;
 	char *ready;
 	int rc = -1, nul_line;
@@ -888,8 +1058,17 @@ scene_load_buffer_frame(struct scene *sc, const char *file,
 			    "use a list, (1, 0.5)";
 		diag(ST_SCENE, f != NULL ? f : file,
 		    config_error_line(&cfg), 0, "%s", why);
-	} else
+	} else if (ld == NULL || override_apply(config_root_setting(&cfg),
+	    ld->set, ld->nset, object) == 0) {
+		L.record = ld != NULL && ld->record;
 		rc = load_root(&L, config_root_setting(&cfg));
+		if (rc == 0 && L.record) {
+			sc->text = xmalloc(len + 1);
+			memcpy(sc->text, text, len);
+			sc->text[len] = '\0';
+			sc->len = len;
+		}
+	}
 	free(ready);
 	config_destroy(&cfg);
 	/* Names were copied into the scene, so nothing points into cfg. */
@@ -899,12 +1078,13 @@ scene_load_buffer_frame(struct scene *sc, const char *file,
 int
 scene_load(struct scene *sc, const char *path)
 {
-	return scene_load_frame(sc, path, NULL);
+	return scene_load_as(sc, path, "", NULL);
 }
 
 /* Load from a path, "-" meaning standard input. */
 int
-scene_load_frame(struct scene *sc, const char *path, const struct frame *fr)
+scene_load_as(struct scene *sc, const char *path, const char *object,
+    const struct loading *ld)
 {
 	const char *file = strcmp(path, "-") == 0 ? "<stdin>" : path;
 	FILE *fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
@@ -938,7 +1118,7 @@ scene_load_frame(struct scene *sc, const char *path, const struct frame *fr)
 	if (fp != stdin)
 		fclose(fp);
 	text[len] = '\0';
-	rc = scene_load_buffer_frame(sc, file, text, len, fr);
+	rc = scene_load_buffer_as(sc, file, text, len, object, ld);
 	free(text);
 	return rc;
 }
@@ -953,9 +1133,12 @@ scene_free(struct scene *sc)
 		free(rg->names);
 		free(rg->ids);
 		free(rg->weights);
-		for (size_t k = 0; k < rg->nscenes; k++)
-			free(rg->scenes[k]);
-		free(rg->scenes);
+		for (size_t k = 0; k < rg->scenes.n; k++)
+			free(rg->scenes.v[k]);
+		free(rg->scenes.v);
+		for (size_t k = 0; k < rg->meshes.n; k++)
+			free(rg->meshes.v[k]);
+		free(rg->meshes.v);
 	}
 	free(sc->ranges);
 	if (sc->params != NULL)
@@ -964,6 +1147,14 @@ scene_free(struct scene *sc)
 	free(sc->objects);
 	free(sc->object_scene);
 	free(sc->object_line);
+	for (size_t i = 0; i < sc->nwritten; i++) {
+		free(sc->written[i].path);
+		free(sc->written[i].text);
+	}
+	free(sc->written);
+	free(sc->text);
+	free(sc->object_mesh);
+	free(sc->object_mesh_line);
 	*sc = (struct scene){0};
 }
 

@@ -33,10 +33,16 @@ struct point_list {
 };
 
 #define VARIANTS_MAX	256		/* objects in one organs entry */
+
+/* File names, one per variant of an entry (T_FILES). */
+struct file_list {
+	char		**v;		/* owned, or NULL: not given */
+	size_t		 n;
+};
 #define RANGES_MAX	1024		/* entries in organs */
 
 /* One entry of organs = ( ... ): an index range and what its organs are. */
-enum { RG_FROM, RG_TO, RG_OBJECT, RG_WEIGHTS, RG_SCENE, RG_SCALE,
+enum { RG_FROM, RG_TO, RG_OBJECT, RG_WEIGHTS, RG_SCENE, RG_MESH, RG_SCALE,
 	RG_ALTITUDE, RG_TILT, RG_ROLL, RG__N };
 
 struct organ_range {
@@ -48,8 +54,8 @@ struct organ_range {
 	unsigned	*ids;		/* names as indices into objects */
 	double		*weights;	/* one per name, or NULL */
 	size_t		 nweights;
-	char		**scenes;	/* one per name, or NULL; owned */
-	size_t		 nscenes;
+	struct file_list scenes;	/* one per name, or none */
+	struct file_list meshes;	/* OBJ files, one per name, or none */
 	struct expr_setting scale, altitude, tilt, roll;
 };
 
@@ -76,9 +82,16 @@ struct scene {
 	const char	**object_scene;	/* for each: its scene file as
 					   written, or NULL (a plain object) */
 	int		*object_line;	/* for each: the entry naming it */
+	const char	**object_mesh;	/* for each: its OBJ file as
+					   written, or NULL */
+	int		*object_mesh_line;	/* for each: where given */
 	size_t		 nobjects;
 	double		 frame_f;	/* f: 0 .. 1 over the frames */
 	int		 frame_no;	/* F: the frame's number, from 1 */
+	struct written	*written;	/* with loading.record; owned */
+	size_t		 nwritten;
+	char		*text;		/* with loading.record: the file */
+	size_t		 len;
 };
 
 /* Which frame of how many a scene is loaded for: f and F in it. */
@@ -87,16 +100,40 @@ struct frame {
 	int		 count;
 };
 
+struct override;
+
+/*
+ * How a run loads every scene it reads: for which frame (NULL: 1 of 1,
+ * so f = 0 and F = 1), with which settings the command line changes
+ * (override.h), and whether to keep each setting as written (record,
+ * for --settings and --cfg).
+ */
+struct loading {
+	const struct frame *frame;
+	struct override	*set;
+	int		 nset;
+	int		 record;
+};
+
+/* A setting as the scene (or --set) wrote it. */
+struct written {
+	char		*path;		/* "planar.scale", "organs.1.tilt" */
+	char		*text;		/* its value in scene-file syntax */
+	int		 line;		/* where: a line, or an override's
+					   (DIAG_LINE_SET + k) */
+};
+
 extern const struct table scene_table;
 
 int	 scene_load(struct scene *, const char *path);
 int	 scene_load_buffer(struct scene *, const char *file,
 	    const char *text, size_t len);
-/* The same for a frame (NULL: frame 1 of 1, so f = 0 and F = 1). */
-int	 scene_load_frame(struct scene *, const char *path,
-	    const struct frame *);
-int	 scene_load_buffer_frame(struct scene *, const char *file,
-	    const char *text, size_t len, const struct frame *);
+/* The same as a run loads it, the scene making object ("" the main). */
+int	 scene_load_as(struct scene *, const char *path, const char *object,
+	    const struct loading *);
+int	 scene_load_buffer_as(struct scene *, const char *file,
+	    const char *text, size_t len, const char *object,
+	    const struct loading *);
 void	 scene_free(struct scene *);
 void	 scene_error(const struct scene *, int line, const char *fmt, ...)
 #if defined(__GNUC__)

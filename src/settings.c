@@ -17,31 +17,41 @@
 
 static const struct row range_rows[] = {
 	[RG_FROM] = { .name = "from", .type = T_INT, .off = R(from), .lo = 0,
-	  .hi = HUGE_VAL, .defstr = "0", .doc = "first organ of the entry" },
+	  .hi = HUGE_VAL, .defstr = "0", .unit = "organ",
+	  .doc = "first organ of the entry" },
 	[RG_TO] = { .name = "to", .type = T_INT, .off = R(to), .lo = -1,
 	  .hi = HUGE_VAL, .def = -1, .defstr = "-1",
+	  .unit = "organ",
 	  .doc = "last organ of the entry; -1 the last of all" },
 	[RG_OBJECT] = { .name = "object", .type = T_NAMES, .defstr = "Organ",
 	  .doc = "organ object, or an array of variants chosen at random" },
 	[RG_WEIGHTS] = { .name = "weights", .type = T_WEIGHTS, .lo = 0,
 	  .hi = HUGE_VAL, .defstr = "all 1",
 	  .doc = "relative frequency of each variant" },
-	[RG_SCENE] = { .name = "scene", .type = T_FILES, .defstr = "none",
+	[RG_SCENE] = { .name = "scene", .type = T_FILES, .off = R(scenes),
+	  .defstr = "none",
 	  .doc = "a scene file making the object, relative to this one; "
 	  "an array: one per variant" },
+	[RG_MESH] = { .name = "mesh", .type = T_FILES, .off = R(meshes),
+	  .defstr = "none",
+	  .doc = "a Wavefront OBJ file of the object's mesh for --gltf, "
+	  "relative to this one; an array: one per variant" },
 	[RG_SCALE] = { .name = "scale", .type = T_EXPR, .off = R(scale),
 	  .vars = EXPR_ALL, .defstr = "r", .doc = "scale of the organ model" },
 	[RG_ALTITUDE] = { .name = "altitude", .type = T_EXPR,
 	  .off = R(altitude), .vars = EXPR_ALL, .defstr = "0",
+	  .unit = "length",
 	  .doc = "offset along the surface normal w" },
 	[RG_TILT] = { .name = "tilt", .type = T_EXPR, .off = R(tilt),
 	  .vars = EXPR_ALL, .defstr = "0",
+	  .unit = "degrees",
 	  .doc = "rotation about v lifting u towards w, degrees" },
 	[RG_ROLL] = { .name = "roll", .type = T_EXPR, .off = R(roll),
-	  .vars = EXPR_ALL, .defstr = "0", .doc = "rotation about w, degrees" },
+	  .vars = EXPR_ALL, .defstr = "0", .unit = "degrees",
+	  .doc = "rotation about w, degrees" },
 };
 
-static const struct table range_table = TABLE(range_rows, struct organ_range);
+const struct table range_table = TABLE(range_rows, struct organ_range);
 
 static const struct row scene_rows[] = {
 	[S_NAME] = { .name = "name", .type = T_IDENT, .off = S(name),
@@ -53,9 +63,11 @@ static const struct row scene_rows[] = {
 	[S_DIVERGENCE] = { .name = "divergence", .type = T_FLOAT,
 	  .off = S(divergence), .lo = -360, .hi = 360, .def = GOLDEN_ANGLE,
 	  .defstr = "137.507764",
+	  .unit = "degrees",
 	  .doc = "divergence angle between consecutive organs, degrees" },
 	[S_COUNT] = { .name = "count", .type = T_INT, .off = S(count), .lo = 1,
-	  .hi = COUNT_MAX, .defstr = "none", .doc = "number of organs" },
+	  .hi = COUNT_MAX, .defstr = "none", .unit = "organs",
+	  .doc = "number of organs" },
 	[S_SEED] = { .name = "seed", .type = T_INT, .off = S(seed),
 	  .lo = -HUGE_VAL, .hi = HUGE_VAL, .defstr = "0",
 	  .doc = "seed of rand() and of the choice among variants" },
@@ -76,6 +88,12 @@ static const char *const type_names[] = {
 	[T_INTS] = "integers", [T_POINTS] = "points", [T_RANGES] = "list",
 	[T_MODEL] = "string", [T_VEC3] = "numbers", [T_FILES] = "files"
 };
+
+const char *
+settings_type(const struct row *r)
+{
+	return type_names[r->type];
+}
 
 static void
 list_row(FILE *fp, const char *prefix, const struct row *r)

@@ -43,6 +43,7 @@ struct row {
 	const char	*defstr;	/* as the man page says it */
 	const char *const *words;	/* T_CHOICE: NULL-terminated */
 	unsigned	 vars;		/* T_EXPR: the variables it may use */
+	const char	*unit;		/* "degrees", "length", ... or NULL */
 	const char	*doc;
 };
 
@@ -74,5 +75,9 @@ struct table {
 
 /* The tables, one setting a line, for the test that checks the man page. */
 void	settings_list(FILE *);
+/* A row's type as the man page names it: "number", "expression", ... */
+const char *settings_type(const struct row *);
+/* The rows of an organs entry. */
+extern const struct table range_table;
 
 #endif

@@ -1,8 +1,10 @@
 /*
  * sink.c - buffered output for the writers.  A sink either flushes to a
  * stream in 64 KiB blocks or, with no stream, keeps everything in memory
- * (used by tests and fuzzing).  The first write error is remembered and
- * reported once by sink_finish(), so writers need not check each call.
+ * (used by tests and fuzzing), or only counts (estimating a size).  The
+ * first write error is remembered and reported once by sink_finish(), so
+ * writers need not check each call.  A block that would take a run past
+ * its budget's limit is not written: the error is EFBIG, budget->over.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -21,13 +23,36 @@ sink_init(struct sink *s, FILE *fp)
 	s->buf = xmalloc(s->cap);
 }
 
+void
+sink_init_count(struct sink *s)
+{
+	sink_init(s, NULL);
+	s->counting = 1;
+}
+
 static void
 sink_flush(struct sink *s)
 {
+	struct budget *b = s->budget;
+
+	if (s->counting) {
+		s->counted += (double)s->len;
+		s->len = 0;
+	}
 	if (s->fp == NULL || s->len == 0)
 		return;
+	if (s->err == 0 && b != NULL && b->limit > 0 &&
+	    b->used + (double)s->len > b->limit) {
+		b->over = 1;
+		s->err = EFBIG;
+	}
 	if (s->err == 0 && fwrite(s->buf, 1, s->len, s->fp) != s->len)
 		s->err = errno ? errno : EIO;
+	if (s->err == 0 && b != NULL) {
+		b->used += (double)s->len;
+		if (b->told != NULL)
+			b->told(b);
+	}
 	s->len = 0;
 }
 
@@ -83,6 +108,18 @@ sink_uint(struct sink *s, unsigned long long v)
 		tmp[--i] = (char)('0' + v % 10);
 	while ((v /= 10) != 0);
 	sink_write(s, tmp + i, sizeof(tmp) - i);
+}
+
+void
+sink_add(struct sink *s, double n)
+{
+	s->counted += n;
+}
+
+double
+sink_bytes(const struct sink *s)
+{
+	return s->counted + (double)s->len;
 }
 
 /* Flush everything; 0, or -1 with errno set to the first failure. */

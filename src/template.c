@@ -33,8 +33,10 @@
 #include <string.h>
 
 #include "diag.h"
+#include "flatten.h"
 #include "phyllo.h"
 #include "mem.h"
+#include "suggest.h"
 #include "template.h"
 
 
@@ -63,7 +65,8 @@ struct tmpl {
 	char		*text;		/* owned; segments point into it */
 	struct seg	*segs;
 	size_t		 nsegs, cap;
-	int		 structures;	/* it has a @@structures block */
+	int		 structures;	/* its @@structures blocks */
+	size_t		 body;		/* the first one's SEG_BEGIN */
 };
 
 /* The blocks open while parsing, outermost first. */
@@ -76,7 +79,7 @@ struct open {
 const struct organ *
 tmpl_organ(const struct tmpl_ctx *c)
 {
-	return &c->r->organs[c->organ];
+	return c->o;
 }
 
 /* The placeholders every template has. */
@@ -136,11 +139,8 @@ static void put_object_index(struct sink *s, const struct tmpl_ctx *c)
 static void
 put_object_organs(struct sink *s, const struct tmpl_ctx *c)
 {
-	size_t k = object_of(c), n = 0;
-
-	for (size_t i = 0; i < c->r->count; i++)
-		n += c->r->organs[i].object == k;
-	sink_uint(s, n);
+	sink_uint(s, (unsigned long long)result_object_organs(c->r,
+	    object_of(c)));
 }
 
 /* "," between items of a block, nothing after the last. */
@@ -189,37 +189,37 @@ ORGAN_FIELD(put_h, o->height)
 #define ITEM		(TS_OBJECT | TS_ORGAN)
 
 static const struct tmpl_var common[] = {
-	{ "NAME", ANY, put_name },
-	{ "COUNT", ANY, put_count },
-	{ "MODEL", ANY, put_model },
-	{ "DIVERGENCE", ANY, put_divergence },
-	{ "SEED", ANY, put_seed },
-	{ "VERSION", ANY, put_version },
-	{ "SCENE", ANY, put_scene },
-	{ "OBJECT_COUNT", ANY, put_object_count },
-	{ "FRAME", ANY, put_frame },
-	{ "FRAMES", ANY, put_frames },
-	{ "FRAME_F", ANY, put_frame_f },
-	{ "PART", ANY, put_part },
-	{ "OBJECT", ITEM, put_object },
-	{ "OBJECT_INDEX", ITEM, put_object_index },
-	{ "OBJECT_ORGANS", ITEM, put_object_organs },
-	{ "COMMA", ITEM, put_comma },
-	{ "N", TS_ORGAN, put_n },
-	{ "T", TS_ORGAN, put_t },
-	{ "X", TS_ORGAN, put_x }, { "Y", TS_ORGAN, put_y },
-	{ "Z", TS_ORGAN, put_z },
-	{ "UX", TS_ORGAN, put_ux }, { "UY", TS_ORGAN, put_uy },
-	{ "UZ", TS_ORGAN, put_uz },
-	{ "VX", TS_ORGAN, put_vx }, { "VY", TS_ORGAN, put_vy },
-	{ "VZ", TS_ORGAN, put_vz },
-	{ "WX", TS_ORGAN, put_wx }, { "WY", TS_ORGAN, put_wy },
-	{ "WZ", TS_ORGAN, put_wz },
-	{ "SCALE", TS_ORGAN, put_scale },
-	{ "RADIUS", TS_ORGAN, put_radius },
-	{ "PHI", TS_ORGAN, put_phi },
-	{ "H", TS_ORGAN, put_h },
-	{ NULL, 0, NULL }
+	{ "NAME", ANY, put_name, NULL },
+	{ "COUNT", ANY, put_count, NULL },
+	{ "MODEL", ANY, put_model, NULL },
+	{ "DIVERGENCE", ANY, put_divergence, NULL },
+	{ "SEED", ANY, put_seed, NULL },
+	{ "VERSION", ANY, put_version, NULL },
+	{ "SCENE", ANY, put_scene, NULL },
+	{ "OBJECT_COUNT", ANY, put_object_count, NULL },
+	{ "FRAME", ANY, put_frame, NULL },
+	{ "FRAMES", ANY, put_frames, NULL },
+	{ "FRAME_F", ANY, put_frame_f, NULL },
+	{ "PART", ANY, put_part, NULL },
+	{ "OBJECT", ITEM, put_object, NULL },
+	{ "OBJECT_INDEX", ITEM, put_object_index, NULL },
+	{ "OBJECT_ORGANS", ITEM, put_object_organs, NULL },
+	{ "COMMA", ITEM, put_comma, NULL },
+	{ "N", TS_ORGAN, put_n, NULL },
+	{ "T", TS_ORGAN, put_t, NULL },
+	{ "X", TS_ORGAN, put_x, NULL }, { "Y", TS_ORGAN, put_y, NULL },
+	{ "Z", TS_ORGAN, put_z, NULL },
+	{ "UX", TS_ORGAN, put_ux, NULL }, { "UY", TS_ORGAN, put_uy, NULL },
+	{ "UZ", TS_ORGAN, put_uz, NULL },
+	{ "VX", TS_ORGAN, put_vx, NULL }, { "VY", TS_ORGAN, put_vy, NULL },
+	{ "VZ", TS_ORGAN, put_vz, NULL },
+	{ "WX", TS_ORGAN, put_wx, NULL }, { "WY", TS_ORGAN, put_wy, NULL },
+	{ "WZ", TS_ORGAN, put_wz, NULL },
+	{ "SCALE", TS_ORGAN, put_scale, NULL },
+	{ "RADIUS", TS_ORGAN, put_radius, NULL },
+	{ "PHI", TS_ORGAN, put_phi, NULL },
+	{ "H", TS_ORGAN, put_h, NULL },
+	{ NULL, 0, NULL, NULL }
 };
 
 static const struct tmpl_var *
@@ -309,9 +309,19 @@ directive(struct tmpl *t, const char *file, int line, const char *p,
 		    strncmp(w, block_words[b], wl) == 0)
 			break;
 	if (b == NBLOCKS) {
-		diag(ST_SCENE, file, line, 0, "unknown directive '@@%.*s' "
-		    "(@@structures, @@objects, @@organs, @@part, @@main, "
-		    "@@end or @@# comment)", (int)(wl > 40 ? 40 : wl), w);
+		const char *words[NBLOCKS + 1], *near;
+		char typed[48];
+
+		for (b = 0; b < NBLOCKS; b++)
+			words[b] = block_words[b];
+		words[NBLOCKS] = "end";
+		snprintf(typed, sizeof(typed), "%.*s", (int)(wl > 40 ? 40 : wl),
+		    w);
+		near = suggest(typed, words, NBLOCKS + 1);
+		diag(ST_SCENE, file, line, 0, "unknown directive '@@%s'%s%s%s: "
+		    "@@structures, @@objects, @@organs, @@part, @@main, @@end "
+		    "or an @@# comment", typed, near ? " (did you mean @@" : "",
+		    near ? near : "", near ? "?)" : "");
 		return -1;
 	}
 	if ((b == B_STRUCTURES && o->n > 0) ||
@@ -324,12 +334,34 @@ directive(struct tmpl *t, const char *file, int line, const char *p,
 		    "@@objects and @@organs do not nest");
 		return -1;
 	}
-	if (b == B_STRUCTURES)
-		t->structures = 1;
+	if (b == B_STRUCTURES && t->structures++ == 0)
+		t->body = t->nsegs;
 	o->seg[o->n] = t->nsegs;
 	o->line[o->n++] = line;
 	seg_add(t, SEG_BEGIN)->block = (enum block)b;
 	return 0;
+}
+
+/* "unknown placeholder @NAMEE@ (did you mean @NAME@?)" */
+static void
+unknown_var(const char *file, int line, const char *name, size_t len,
+    const struct tmpl_var *extra)
+{
+	const struct tmpl_var *lists[2] = { extra, common };
+	const char *words[128], *near;
+	char typed[48];
+	size_t n = 0;
+
+	for (int i = 0; i < 2; i++)
+		for (const struct tmpl_var *v = lists[i]; v && v->name &&
+		    n < 128; v++)
+			words[n++] = v->name;
+	snprintf(typed, sizeof(typed), "%.*s", (int)(len > 40 ? 40 : len),
+	    name);
+	near = suggest(typed, words, n);
+	diag(ST_SCENE, file, line, 0, "unknown placeholder @%s@%s%s%s", typed,
+	    near ? " (did you mean @" : "", near ? near : "", near ? "@?)" :
+	    "");
 }
 
 /* One line of text: copy it, with placeholders and "@@" resolved. */
@@ -361,8 +393,8 @@ text_line(struct tmpl *t, const char *file, int line, const char *p,
 			continue;
 		}
 		if ((v = var_find(extra, q + 1, (size_t)(r - q - 1))) == NULL) {
-			diag(ST_SCENE, file, line, 0, "unknown placeholder "
-			    "%.*s", (int)(r - q + 1 > 48 ? 48 : r - q + 1), q);
+			unknown_var(file, line, q + 1, (size_t)(r - q - 1),
+			    extra);
 			return -1;
 		}
 		if (!(v->scopes & scope)) {
@@ -472,6 +504,49 @@ tmpl_builtin(const char *name, const struct tmpl_var *extra)
 static void	write_run(const struct tmpl *, size_t from, size_t to,
 		    struct sink *, struct tmpl_ctx *);
 
+/* An @@organs block being written for each organ result_each() gives. */
+struct organs_block {
+	const struct tmpl *t;
+	size_t		 from, to;
+	struct sink	*s;
+	struct tmpl_ctx	*in;
+};
+
+static void
+organ_block(void *ctx, const struct organ *o)
+{
+	struct organs_block *b = ctx;
+
+	b->in->o = o;
+	write_run(b->t, b->from, b->to, b->s, b->in);
+	b->in->organ++;
+}
+
+/* Organs an estimate writes of an @@organs block: the rest is scaled. */
+#define SAMPLE	64
+
+struct sampled {
+	struct organs_block b;
+	size_t		 k;
+	double		 weights, bytes;
+};
+
+static void
+sample_block(void *ctx, const struct organ *o, double weight)
+{
+	struct sampled *S = ctx;
+	size_t count = S->b.in->r->count;
+	double before = sink_bytes(S->b.s);
+
+	/* The index it stands for, so that @N@ has its digits. */
+	S->b.in->organ = (size_t)(((double)S->k++ + 0.5) * (double)count /
+	    SAMPLE);
+	S->b.in->o = o;
+	write_run(S->b.t, S->b.from, S->b.to, S->b.s, S->b.in);
+	S->weights += weight;
+	S->bytes += weight * (sink_bytes(S->b.s) - before);
+}
+
 /* A block starting at segment i, in context c. */
 static void
 write_block(const struct tmpl *t, size_t i, struct sink *s,
@@ -494,14 +569,30 @@ write_block(const struct tmpl *t, size_t i, struct sink *s,
 			write_run(t, i + 1, g->end, s, &in);
 		return;
 	case B_OBJECTS:
-	case B_ORGANS:
-		in.scope = g->block == B_ORGANS ? TS_ORGAN : TS_OBJECT;
-		n = g->block == B_ORGANS ? c->r->count : c->r->nobjects;
-		for (size_t k = 0; k < n; k++) {
-			in.organ = in.object = k;
+		in.scope = TS_OBJECT;
+		for (n = 0; n < c->r->nobjects; n++) {
+			in.object = n;
 			write_run(t, i + 1, g->end, s, &in);
 		}
 		return;
+	case B_ORGANS: {
+		struct organs_block b = { t, i + 1, g->end, s, &in };
+		struct sampled S = { b, 0, 0, 0 };
+		double before = sink_bytes(s);
+
+		in.scope = TS_ORGAN;
+		in.organ = 0;
+		if (!c->estimate || c->r->count <= SAMPLE) {
+			result_each(c->r, RESULT_ALL, organ_block, &b);
+			return;
+		}
+		/* The sample is written: add the rest of the mean times count. */
+		result_sample(c->r, SAMPLE, sample_block, &S);
+		if (S.weights > 0)
+			sink_add(s, S.bytes / S.weights * (double)c->r->count -
+			    (sink_bytes(s) - before));
+		return;
+	}
 	}
 }
 
@@ -515,6 +606,8 @@ write_run(const struct tmpl *t, size_t from, size_t to, struct sink *s,
 
 		if (g->kind == SEG_TEXT)
 			sink_write(s, g->text, g->len);
+		else if (g->kind == SEG_VAR && c->estimate && g->var->size)
+			sink_add(s, g->var->size(c));
 		else if (g->kind == SEG_VAR)
 			g->var->put(s, c);
 		else if (g->kind == SEG_BEGIN) {
@@ -524,14 +617,60 @@ write_run(const struct tmpl *t, size_t from, size_t to, struct sink *s,
 	}
 }
 
+/* Segments [from, to) of the piece. */
+static void
+piece_segs(const struct tmpl *t, enum tmpl_piece piece, size_t *from,
+    size_t *to)
+{
+	size_t b = t->structures ? t->body : t->nsegs;
+	size_t e = t->structures ? t->segs[b].end + 1 : t->nsegs;
+
+	*from = piece == TMPL_ALL || piece == TMPL_HEAD ? 0 :
+	    piece == TMPL_BODY ? b : e;
+	*to = piece == TMPL_ALL || piece == TMPL_TAIL ? t->nsegs :
+	    piece == TMPL_HEAD ? b : e;
+}
+
+static void
+write_piece(const struct tmpl *t, enum tmpl_piece piece, struct sink *s,
+    const struct result *const *all, size_t nall, unsigned opts,
+    int estimate)
+{
+	struct tmpl_ctx c = { all[nall - 1], opts, TS_GLOBAL, 0, 0, NULL,
+	    all, nall, estimate };
+	size_t from, to;
+
+	piece_segs(t, piece, &from, &to);
+	write_run(t, from, to, s, &c);
+}
+
 void
 tmpl_write(const struct tmpl *t, struct sink *s,
     const struct result *const *all, size_t nall, unsigned opts)
 {
-	struct tmpl_ctx c = { all[nall - 1], opts, TS_GLOBAL, 0, 0, all,
-	    nall };
+	write_piece(t, TMPL_ALL, s, all, nall, opts, 0);
+}
 
-	write_run(t, 0, t->nsegs, s, &c);
+void
+tmpl_write_piece(const struct tmpl *t, enum tmpl_piece piece,
+    struct sink *s, const struct result *const *all, size_t nall,
+    unsigned opts)
+{
+	write_piece(t, piece, s, all, nall, opts, 0);
+}
+
+double
+tmpl_bytes(const struct tmpl *t, enum tmpl_piece piece,
+    const struct result *const *all, size_t nall, unsigned opts)
+{
+	struct sink s;
+	double n;
+
+	sink_init_count(&s);
+	write_piece(t, piece, &s, all, nall, opts, 1);
+	n = sink_bytes(&s);
+	sink_free(&s);
+	return n;
 }
 
 int

@@ -1,7 +1,8 @@
 #!/bin/sh
 # blender-root.sh SUITE [DIR] - make a Debian SUITE root (trixie, sid, ...)
-# holding that suite's Blender, for testing our scripts in the Blenders
-# artists run; does nothing if DIR already has one. Needs root and
+# holding that suite's Blender (and gltfpack), for testing our scripts
+# and files in the programs artists run; if DIR already has a Blender,
+# only adds what a root made before the glTF tests lacks. Needs root and
 # debootstrap. DIR defaults to $PHYLLO_ROOTS/SUITE, and PHYLLO_ROOTS to
 # /var/cache/phyllo-export (outside the tree, so `make clean` keeps it).
 # Run Blender in it with tests/blender-in-root.sh DIR.
@@ -9,7 +10,25 @@ set -eu
 suite=${1:?usage: blender-root.sh SUITE [DIR]}
 dir=${2:-${PHYLLO_ROOTS:-/var/cache/phyllo-export}/$suite}
 
+# Blender 5's extension code imports the first two at start-up, and says
+# so on every run without them; only a Recommends, so installed by name.
+# The glTF importer needs numpy (also only a Recommends), and gltfpack
+# 0.21 or newer (Debian 13's) is the one that reads --gltf's instancing.
+extras() {
+	for p in python3-cattr python3-requests python3-numpy gltfpack; do
+		chroot "$dir" sh -c "DEBIAN_FRONTEND=noninteractive apt-get \
+			install -y -q --no-install-recommends $p" \
+			>>"$dir.log" 2>&1 || :
+	done
+	chroot "$dir" apt-get clean
+}
+
 if [ -x "$dir/usr/bin/blender" ]; then
+	# A root made before the glTF tests lacks what they run.
+	if [ ! -x "$dir/usr/bin/gltfpack" ] ||
+	    [ ! -d "$dir/usr/lib/python3/dist-packages/numpy" ]; then
+		extras
+	fi
 	echo "$dir: Blender already there"
 	exit 0
 fi
@@ -29,11 +48,5 @@ chroot "$dir" sh -c 'apt-get -o Acquire::Check-Valid-Until=false update -q &&
 	DEBIAN_FRONTEND=noninteractive apt-get install -y -q \
 	--no-install-recommends blender' >>"$dir.log" 2>&1 ||
 	{ tail "$dir.log" >&2; exit 1; }
-# Blender 5's extension code imports these at start-up, and says so on
-# every run without them; only a Recommends, so installed by name.
-for p in python3-cattr python3-requests; do
-	chroot "$dir" sh -c "DEBIAN_FRONTEND=noninteractive apt-get install \
-		-y -q --no-install-recommends $p" >>"$dir.log" 2>&1 || :
-done
-chroot "$dir" apt-get clean
+extras
 echo "$dir: $(chroot "$dir" blender --version 2>/dev/null | head -1)"

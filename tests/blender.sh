@@ -5,10 +5,12 @@
 # .blend holding the artist's own Seed object and Bract collection,
 # then hold the evaluated instances (object, position, rotation and
 # scale) against the CSV; the same for linked duplicates and for an
-# empty file (placeholders only); a compound structure of three levels,
+# empty file (placeholders only); a re-run that keeps the artist's
+# edited placeholders; a compound structure of three levels,
 # each leaf against --csv --flatten, and its growth over frames read at
 # two frames; every example scene in one process;
-# a too-old Blender's one-line refusal; the import add-on.
+# a too-old Blender's one-line refusal; the import add-on and its
+# Phyllotaxis panel.
 . tests/lib.sh
 
 : "${BLENDERS:=${BLENDER:-}}"
@@ -31,6 +33,8 @@ CFG
 px --csv -o "$OUT/head.csv" "$OUT/head.cfg"
 px --blender -o "$OUT/head.py" "$OUT/head.cfg"
 px --blender --blender-objects -o "$OUT/head-obj.py" "$OUT/head.cfg"
+printf 'model = "planar";\ncount = 20;\norgans = ( { object = "Sed"; to = 9; }, { object = "Petal"; from = 10; } );\n' >"$OUT/typo.cfg"
+px --blender -o "$OUT/typo.py" "$OUT/typo.cfg"
 sed 's/"Bract"/"Leaf"/' "$OUT/head.cfg" >"$OUT/bare.cfg"
 px --csv -o "$OUT/bare.csv" "$OUT/bare.cfg"
 px --blender -o "$OUT/bare.py" "$OUT/bare.cfg"
@@ -43,8 +47,37 @@ cp -r tests/compound/tree.cfg tests/compound/mid.cfg tests/compound/sub "$OUT/"
 px --blender -o "$OUT/tree.py" "$OUT/tree.cfg"
 px --csv --flatten -o "$OUT/tree.csv" "$OUT/tree.cfg"
 px --blender --frames 3 -o "$OUT/grow.py" "$OUT/tree.cfg"
+# One scene of every model, for the whole frame of every organ: a
+# cylinder's organs point u along the axis (Euler's gimbal lock), a
+# sphere's face every way.
+POSES="scenes/sunflower.cfg:planar tests/golden/cyl813.cfg:cylindrical
+scenes/pinecone.cfg:cylindrical scenes/coneflower.cfg:collision
+scenes/dandelion.cfg:area scenes/transient.cfg:inhibition"
+for s in $POSES; do
+	b=$(basename "${s%:*}" .cfg)
+	px --csv --set count=300 -o "$OUT/pose-$b.csv" "${s%:*}"
+	px --blender --set count=300 -o "$OUT/pose-$b.py" "${s%:*}"
+done
 px --csv --flatten --frames 3 -o "$OUT/grow%d.csv" "$OUT/tree.cfg"
 printf 'model = "planar";\ncount = 0;\n' >"$OUT/bad-addon.cfg"
+# The panel's scene, and --csv of what its changes should build.
+cat >"$OUT/panel.cfg" <<'CFG'
+# A head for the panel's test: its comments must survive a save.
+model = "planar";
+count = 200;
+planar = { scale = 0.1; dome = 0.2; };
+organs = (
+  # seeds, then petals
+  { object = "Seed"; to = 149; tilt = 15; },
+  { object = "Petal"; from = 150; tilt = "20 * rand(1)"; }
+);
+CFG
+px --csv -o "$OUT/base.csv" "$OUT/panel.cfg"
+px --csv --set count=300 -o "$OUT/count.csv" "$OUT/panel.cfg"
+px --csv --set count=300 --set planar.scale=0.05 -o "$OUT/scale.csv" "$OUT/panel.cfg"
+printf 'model = "collision";\ncount = 300;\ncollision = { receptacle = { shape = "hemisphere"; }; radius = 0.08; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/coll.cfg"
+px --csv -o "$OUT/coll.csv" "$OUT/coll.cfg"
+px --csv --set 'collision.receptacle.shape="cone"' -o "$OUT/cone.csv" "$OUT/coll.cfg"
 ADDON_ZIP=$TESTBIN/phyllo_import.zip
 # Statically linked: it runs inside the roots, whose libconfig differs.
 ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
@@ -79,10 +112,15 @@ for b in $BLENDERS; do
 	blend() { bl -b --python-exit-code 1 "$@" >"$OUT/blender.log" 2>&1; }
 	D=$OUT/$ver
 	mkdir -p "$D"
-	# addon ARGS...: tests/blender/addon.py with a user folder of its own.
+	# addon ARGS...: tests/blender/addon.py with a user folder of its
+	# own; panel ARGS...: tests/blender/panel.py the same way.
 	addon() (
 		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
 		blend --factory-startup --python tests/blender/addon.py -- "$@"
+	)
+	panel() (
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
+		blend --factory-startup --python tests/blender/panel.py -- "$@"
 	)
 
 	try "$V: make the artist's .blend (saved, then reopened)" \
@@ -94,8 +132,15 @@ for b in $BLENDERS; do
 		blend "$D/artist.blend" --python "$OUT/head.py" --python "$OUT/head.py" \
 		--python tests/blender/check.py -- "$OUT/head.csv" Head instances
 	checked instances 6
-	assert "says what it did" 'grep -q "phyllo-export: built collection .Head.: 200 organs over 1 frame" $D/instances.log'
+	assert "says what it did, and that Petal alone is a placeholder" 'grep -q "phyllo-export: built collection .Head.: 200 organs over 1 frame(s) in [0-9.]* s; placeholders for Petal\$" $D/instances.log'
 	assert "no traceback" '! grep -q Traceback $D/instances.log'
+	end
+
+	try "$V: a placeholder whose name is near one of the .blend's gets a suggestion" \
+		blend "$D/artist.blend" --python "$OUT/typo.py"
+	assert "Blender exit 0" '[ $rc -eq 0 ]'
+	assert "did you mean Seed" 'grep -q "^phyllo-export: no object or collection .Sed. in the .blend (did you mean .Seed.?)\$" $OUT/blender.log'
+	assert "none for Petal" '! grep -q "collection .Petal. in the .blend" $OUT/blender.log'
 	end
 
 	try "$V: --blender-objects: linked duplicates sharing the organ's mesh, run twice" \
@@ -110,12 +155,27 @@ for b in $BLENDERS; do
 	checked bare 5
 	end
 
+	try "$V: a re-run keeps the collection, and placeholders the artist edited or renamed as their organs" \
+		blend --factory-startup --python tests/blender/rerun.py -- "$OUT/bare.py" Head
+	checked rerun 13
+	end
+
 	try "$V: a compound of three levels: every leaf an instance of the artist's Seed where --flatten puts it, run twice" \
 		blend "$D/artist.blend" --python "$OUT/tree.py" --python "$OUT/tree.py" \
 		--python tests/blender/check.py -- "$OUT/tree.csv" Tree leaves
 	checked tree 6
 	assert "8 x 9 x 7 leaves" 'grep -q "check: ok 504 placed organs" $D/tree.log'
 	end
+
+	for s in $POSES; do
+		b=$(basename "${s%:*}" .cfg)
+		name=$(px --info "${s%:*}" | sed -n 's/^name: //p')
+		try "$V: every organ's whole frame (u, v, w, scale) as the CSV's: ${s#*:} (${s%:*})" \
+			blend --factory-startup --python "$OUT/pose-$b.py" \
+			--python tests/blender/check.py -- "$OUT/pose-$b.csv" "$name" instances
+		checked pose-$b 5
+		end
+	done
 
 	for f in 1 3; do
 		try "$V: --frames 3, one script: at frame $f the leaves of frame $f alone, where its --flatten puts them" \
@@ -147,6 +207,12 @@ for b in $BLENDERS; do
 		cp "$OUT/blender.log" "$D/addon.log"
 		assert "Blender exit 0" '[ $rc -eq 0 ]'
 		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 6 ]'
+		end
+		rm -rf "$D/user"
+		cp "$OUT/panel.cfg" "$D/panel.cfg"
+		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value, save to the scene file, frames" \
+			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
+		checked panel 23
 		end
 	else
 		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"

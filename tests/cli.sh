@@ -305,13 +305,21 @@ fi
 
 # 137.5 degrees is 55/144 of a turn: organs n and n + 144 share a ray.
 printf 'model = "planar";\ncount = 1000;\ndivergence = 137.5;\n' >"$OUT/rays.cfg"
-try "--info warns of a divergence that makes rays, and says how many" px --info "$OUT/rays.cfg"
+try "--info says how many rays a divergence makes, and warns of it on stderr" px --info "$OUT/rays.cfg"
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "rays: 144" 'grep -qx "rays: 144" $OUT/stdout'
-assert "the warning names the fraction and the organ" 'grep -q "^warning: divergence 137.5 is 55/144 of a turn: from organ 144 on" $OUT/stdout'
-px --csv "$OUT/rays.cfg" >"$OUT/rays.csv"
+assert "the warning names the line, the fraction and the organ, once" '[ "$(cat $OUT/stderr)" = "phyllo-export: $OUT/rays.cfg:3: warning: divergence 137.5 is 55/144 of a turn: from organ 144 on, organs line up on 144 rays instead of spirals" ]'
+px --csv "$OUT/rays.cfg" >"$OUT/rays.csv" 2>/dev/null
 assert "and organs n and n+144 do lie on one ray" 'awk -F, "NR > 1 { a[\$1] = atan2(\$4, \$3) } END { for (n = 0; n + 144 < 1000; n++) { d = a[n + 144] - a[n]; if (d < 0) d = -d; if (d > 1e-7 && d < 6.283185) exit 1 } }" $OUT/rays.csv'
 end
 try "the golden angle makes no rays" px --info "$SUN"
-assert "no rays line, no warning" '! grep -q "^rays:\|^warning:" $OUT/stdout'
+assert "no rays line, no warning" '! grep -q "^rays:" $OUT/stdout && [ ! -s $OUT/stderr ]'
+end
+for w in pov blender csv svg; do
+	try "--$w warns of the rays too, once" px --$w "$OUT/rays.cfg"
+	assert "exit 0, one line on stderr" '[ $rc -eq 0 ] && [ $(grep -c "warning: divergence 137.5 is 55/144 of a turn" $OUT/stderr) -eq 1 ] && [ $(wc -l <$OUT/stderr) -eq 1 ]'
+	end
+done
+try "--frames: once a run, not once a frame" px --csv --frames 3 -o "$OUT/rays%d.csv" "$OUT/rays.cfg"
+assert "one line" '[ $(grep -c "warning: divergence" $OUT/stderr) -eq 1 ]'
 end

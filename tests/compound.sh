@@ -211,7 +211,7 @@ end
 
 try "--info --frames says which frame: F, N and f" px --info --frames 3 -o "$OUT/gi%d.txt" "$OUT/grow.cfg"
 assert "exit 0" '[ $rc -eq 0 ]'
-assert "frame: 2 3 0.5" 'grep -qx "frame: 2 3 0.5" $OUT/gi2.txt'
+assert "frame: F 2; of 3; f 0.5" 'grep -qx "frame: F 2; of 3; f 0.5" $OUT/gi2.txt'
 end
 
 try "without --frames, f = 0 and F = 1" px --csv "$OUT/grow.cfg"
@@ -229,8 +229,21 @@ sed 's/"10 + 5 \* F"/"F == 3 ? 0 : 10"/' "$OUT/grow.cfg" >"$OUT/fails.cfg"
 echo old >"$OUT/fail001.csv"
 try "a frame that fails leaves no frame behind" px --csv --frames 4 -o "$OUT/fail%03d.csv" "$OUT/fails.cfg"
 assert "exit 1" '[ $rc -eq 1 ]'
-assert "names the scene and line" 'grep -q "fails.cfg:3: count 0 is out of range" $OUT/stderr'
+assert "names the scene, the line and the frame" 'grep -qx "phyllo-export: $OUT/fails.cfg:3: frame 3 of 4 (f = 0.666666667): count 0 is out of range: must be between 1 and 10000000" $OUT/stderr'
 assert "fail001.csv untouched, no other" '[ "$(cat $OUT/fail001.csv)" = old ] && [ $(ls -A $OUT | grep -c "fail0") -eq 1 ]'
+end
+
+# The issue's own case: the last frame of three fails; and an error in
+# a part's expression says its frame too.
+printf 'model = "planar";\ncount = "200 - 300*f";\n' >"$OUT/failframe.cfg"
+try "an error in frame 3 of 3 says so, with f" px --pov --frames 3 -o "$OUT/ff%d.inc" "$OUT/failframe.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "frame 3 of 3 (f = 1)" 'grep -qx "phyllo-export: $OUT/failframe.cfg:2: frame 3 of 3 (f = 1): count -100 is out of range: must be between 1 and 10000000" $OUT/stderr'
+assert "one line" '[ $(wc -l <$OUT/stderr) -eq 1 ]'
+assert "no file" '[ -z "$(ls -A $OUT | grep "ff[0-9]")" ]'
+end
+try "without --frames, no frame in the message" px --pov "$OUT/fails.cfg"
+assert "exit 0 (frame 1 of 1 is fine)" '[ $rc -eq 0 ]'
 end
 
 for o in "" "-o $OUT/plain.csv" "-o $OUT/two%d%d.csv" "-o $OUT/s%s.csv" "-o $OUT/x%-3d.csv"; do
@@ -253,6 +266,19 @@ end
 try "--blender --frames 3 writes one script to standard output" px --blender --frames 3 "$OUT/grow.cfg"
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "FRAMES = 3, three structures" 'grep -q "^FRAMES = 3$" $OUT/stdout && [ $(grep -c "^    ([123], \"Grow\", " $OUT/stdout) -eq 3 ]'
+end
+
+# One file of every frame is written frame by frame, as the frames are
+# made: that takes one @@structures block.
+printf '# @NAME@\n@@structures\n# first @NAME@ @COUNT@\n@@end\n@@structures\n# again @NAME@\n@@end\n' >"$OUT/two.tmpl"
+try "--blender --frames with a template of two @@structures blocks is an error" \
+	px --blender --frames 2 --template "$OUT/two.tmpl" "$OUT/grow.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "names the template" 'grep -qx "phyllo-export: $OUT/two.tmpl: 2 @@structures blocks: with --frames a template has one, written frame by frame" $OUT/stderr'
+assert "nothing written" '[ ! -s $OUT/stdout ]'
+end
+try "... and without --frames it writes both" px --blender --template "$OUT/two.tmpl" "$OUT/grow.cfg"
+assert "exit 0, the second block written" '[ $rc -eq 0 ] && grep -q "^# again Grow$" $OUT/stdout'
 end
 
 try "--pov --frames: frames of a compound, parts in every frame" px --pov --frames 2 -o "$OUT/tf%d.inc" "$OUT/top.cfg"

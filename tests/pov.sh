@@ -57,6 +57,27 @@ assert "red covers 490.9 px (got $red)" 'near $red 490.9 5'
 assert "nothing but red and background" '[ $((red + bg)) -ge 9990 ]'
 end
 
+# warnings NAME: parse $OUT/NAME.pov with POV-Ray's messages on (render
+# turns them off), its console lines (wrapped at 80) joined again.
+warnings() {
+	(cd "$OUT" && "$POVRAY" -D +FP +W10 +H10 +I"$1.pov" +O/dev/null) 2>&1 |
+		tr '\n' ' ' | sed 's/ Parse Warning: /\n/g' >"$OUT/$1.warnings"
+}
+try "a placeholder says so where POV-Ray reports: a #warning naming it" warnings alone
+assert "the scene without Seed: its warning" 'grep -q "^phyllo-export: no Seed declared before  *the #include: a placeholder sphere of radius 1 stands in" $OUT/alone.warnings'
+warnings own
+assert "the scene with its own Seed: none" '! grep -q "phyllo-export: no Seed" $OUT/own.warnings'
+end
+# Two parts sharing a leaf object, none declared: a warning each, once.
+printf 'model = "planar";\ncount = 3;\norgans = ( { object = "Bud"; } );\n' >"$OUT/wbud.cfg"
+printf 'model = "planar";\ncount = 4;\norgans = ( { object = ["A", "B"]; scene = ["wbud.cfg", "wb2.cfg"]; } );\n' >"$OUT/wtop.cfg"
+printf 'model = "planar";\ncount = 2;\norgans = ( { object = "Bud"; } );\n' >"$OUT/wb2.cfg"
+px --pov -o "$OUT/wtop.inc" "$OUT/wtop.cfg"
+printf '%s\n#include "wtop.inc"\nobject { Wtop }\n' "$TOP" >"$OUT/wtop.pov"
+try "a leaf shared by two parts is warned of once" warnings wtop
+assert "one warning for Bud" '[ $(grep -c "^phyllo-export: no Bud declared" $OUT/wtop.warnings) -eq 1 ]'
+end
+
 # Organ 0 at (1, 0), organ 1 at (0, 1.5); each a bar from its centre
 # outward along u, 0.4 long.  Unmirrored, organ 0's bar covers pixels
 # 75-85 of row 50 and organ 1's rows 3-12 of column 50.
@@ -179,5 +200,45 @@ for pov in scenes/*.pov; do
 	try "scenes/$name.pov renders" render "$name"
 	assert "POV-Ray exit 0" '[ $rc -eq 0 ]'
 	assert "not just background" '[ $(count $OUT/$name.ppm 0 0 0) -lt 10000 ]'
+	end
+done
+
+# Every pose, read back by POV-Ray itself: for one scene of every model
+# (a true cylinder's organs point u straight along the axis, a tapering
+# one's nearly; a sphere's face every way), where each organ's matrix
+# takes the origin and the axes, against
+# the CSV in POV-Ray's axes (<x, z, y>): +x to u, +y to w, +z to v,
+# times the scale.
+for s in scenes/sunflower.cfg:planar tests/golden/cyl813.cfg:cylindrical \
+    scenes/pinecone.cfg:cylindrical "scenes/coneflower.cfg --set count=400:collision" \
+    scenes/dandelion.cfg:area scenes/transient.cfg:inhibition; do
+	model=${s##*:}
+	# shellcheck disable=SC2086
+	set -- ${s%:*}
+	cfg=$1
+	shift
+	try "POV-Ray reads every organ's matrix as the CSV's frame and scale: $model ($cfg)" \
+		px --pov --template tests/pov-frames.tmpl "$@" -o "$OUT/frames.inc" "$cfg"
+	px --csv "$@" -o "$OUT/frames.csv" "$cfg"
+	printf '#version 3.7;\ncamera { location <0, 5, -5> look_at 0 }\n#include "frames.inc"\n' >"$OUT/frames.pov"
+	rm -f "$OUT/frames.txt"
+	(cd "$OUT" && "$POVRAY" -D -GA +W1 +H1 +Iframes.pov +O/dev/null) >/dev/null 2>&1
+	assert "POV-Ray wrote one line an organ" '[ $(wc -l <$OUT/frames.txt) -eq $(($(wc -l <$OUT/frames.csv) - 1)) ]'
+	assert "origin, x, y, z at pos, pos + s u, pos + s w, pos + s v (within 1e-6)" 'awk -F, "
+		function abs(x) { return x < 0 ? -x : x }
+		function near(a, b) { return abs(a - b) <= 1e-6 * (abs(b) > 1 ? abs(b) : 1) }
+		NR == FNR { if (FNR > 1) c[\$1] = \$0; next }
+		{
+			split(c[\$1], f, \",\"); s = f[15]
+			# CSV (x, y, z) is <x, z, y> in POV-Ray.
+			p[1] = f[3]; p[2] = f[5]; p[3] = f[4]
+			u[1] = f[6]; u[2] = f[8]; u[3] = f[7]
+			v[1] = f[9]; v[2] = f[11]; v[3] = f[10]
+			w[1] = f[12]; w[2] = f[14]; w[3] = f[13]
+			for (k = 1; k <= 3; k++)
+				if (!near(\$(1 + k), p[k]) || !near(\$(4 + k), p[k] + s * u[k]) ||
+				    !near(\$(7 + k), p[k] + s * w[k]) || !near(\$(10 + k), p[k] + s * v[k])) {
+					print \"organ \" \$1 \" axis \" k; exit 1 }
+		}" $OUT/frames.csv $OUT/frames.txt'
 	end
 done

@@ -10,7 +10,7 @@ log=tests/out/run.log
 	for t in test_model test_expr test_cyl test_collision test_area test_inhibition test_parastichy; do
 		$RUN "$TESTBIN/$t" || echo "not ok - $t exited with status $?"
 	done
-	for t in golden placeholders cli scenes compound pov blender man; do
+	for t in golden limits set placeholders cli scenes compound pov blender gltf man docs; do
 		sh "tests/$t.sh"
 	done
 } 2>&1 | tee "$log" | grep -v '^ok - ' | grep -v '^ok - # SKIP'

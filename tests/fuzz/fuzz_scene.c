@@ -2,8 +2,11 @@
  * fuzz_scene.c - libFuzzer harness for the whole scene path: bytes ->
  * scene (and the scenes it includes) -> model -> organs -> every
  * writer, into memory.  The input is written to a file in a directory
- * that also holds two parts it may name, part.cfg and nested.cfg (which
- * names part.cfg), and is loaded as frame 2 of 3, so f and F are live.
+ * that also holds three parts it may name, part.cfg, nested.cfg (which
+ * names part.cfg) and deep.cfg (which names nested.cfg), and is loaded
+ * as frame 2 of 3, so f and F are live.  Each writer's size estimate is
+ * made too, and the Blender script is written in the pieces --frames
+ * writes it in, its parts opened as views.
  * Scenes that ask for more than 20,000 organs, or leave the count to the
  * model, are loaded and checked but not run, to keep each input fast;
  * the limits themselves have their own tests.
@@ -18,6 +21,7 @@
 #include "compound.h"
 #include "flatten.h"
 #include "model.h"
+#include "plan.h"
 #include "scene.h"
 #include "writer.h"
 
@@ -49,6 +53,9 @@ setup(void)
 	    "organs = ( { object = \"Bud\"; tilt = \"30 * f\"; } );\n");
 	put("nested.cfg", "model = \"planar\";\ncount = 4;\n"
 	    "organs = ( { object = \"Part\"; scene = \"part.cfg\"; } );\n");
+	put("deep.cfg", "model = \"planar\";\ncount = \"2 + F\";\n"
+	    "organs = ( { object = \"Stem\"; to = 0; }, { object = \"Nest\";"
+	    " scene = \"nested.cfg\"; from = 1; } );\n");
 	snprintf(path, sizeof(path), "%s/fuzz.cfg", dir);
 }
 
@@ -77,6 +84,7 @@ int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	struct frame fr = { 2, 3 };
+	struct loading ld = { &fr, NULL, 0, 1 };
 	struct compound c;
 	struct result merged;
 	const struct result *all[2];
@@ -88,13 +96,13 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if ((fp = fopen(path, "wb")) == NULL ||
 	    fwrite(data, 1, size, fp) != size || fclose(fp) != 0)
 		abort();
-	if (compound_load(&c, path, &fr, pov_check) != 0 || !small(&c) ||
+	if (compound_load(&c, path, &ld, pov_check) != 0 || !small(&c) ||
 	    compound_run(&c, &fr) != 0)
 		goto out;
 	all[0] = compound_main(&c);
 	sink_init(&s, NULL);
 	csv_write(&s, all[0], 0);
-	if (flatten_count(all[0]) <= 100000)
+	if (flatten_leaves(all[0]) <= 100000)
 		csv_write(&s, all[0], TO_FLATTEN);
 	info_write(&s, all[0], 0);
 	svg_write(&s, all[0], 0);
@@ -105,9 +113,30 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		}
 		tmpl_free(t);
 	}
-	if (flatten_count(compound_main(&c)) <= 100000) {
-		flatten_result(compound_main(&c), &merged);
+	if (flatten_leaves(compound_main(&c)) <= 100000) {
+		/* The view --blender writes a part with parts through. */
+		flatten_view(compound_main(&c), &merged);
+		all[0] = &merged;
+		if ((t = tmpl_builtin("blender.tmpl", blender_vars)) != NULL) {
+			tmpl_write(t, &s, all, 1, 0);
+			tmpl_free(t);
+		}
 		result_free(&merged);
+	}
+	/* Each format's estimate, and the script in --frames' pieces. */
+	for (const struct writer *w = writers; w->name != NULL; w++) {
+		struct plan P;
+
+		t = w->tmpl != NULL ? tmpl_builtin(w->tmpl, w->vars) : NULL;
+		plan_make(&P, w, t, compound_main(&c));
+		(void)plan_bytes(&P, w, t, TMPL_ALL, TO_FLATTEN);
+		if (t != NULL && (w->opts & TO_ANIMATE) &&
+		    flatten_leaves(compound_main(&c)) <= 100000)
+			for (int k = TMPL_HEAD; k <= TMPL_TAIL; k++)
+				tmpl_write_piece(t, (enum tmpl_piece)k, &s,
+				    P.all, P.n, 0);
+		plan_free(&P);
+		tmpl_free(t);
 	}
 	sink_free(&s);
 out:

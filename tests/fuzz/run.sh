@@ -1,21 +1,22 @@
 #!/bin/sh
-# run.sh SECONDS [HARNESS...] - run each fuzz harness (all three unless
+# run.sh SECONDS [HARNESS...] - run each fuzz harness (all five unless
 # named) for SECONDS on its corpus in
-# build-fuzz/corpus/NAME, seeded from the scenes, test inputs and
-# templates; crashes are written to build-fuzz/crash-NAME-*.
+# build-fuzz/corpus/NAME, seeded from the scenes, test inputs, templates
+# and organ meshes; crashes are written to build-fuzz/crash-NAME-*.
 set -u
 t=${1:-60}
 # libconfig 1.5 leaks on one kind of syntax error: not ours.
 LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
 export LSAN_OPTIONS
 [ $# -gt 0 ] && shift
-for f in ${*:-fuzz_scene fuzz_expr fuzz_template}; do
+for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; do
 	c=build-fuzz/corpus/$f
 	mkdir -p "$c"
 	case $f in
 	fuzz_scene) cp scenes/*.cfg tests/golden/*.cfg tests/bad/*.cfg "$c"/
 		# Naming the two parts the harness provides.
 		printf 'model = "planar";\ncount = "5 + F";\norgans = ( { object = ["P", "N"];\n  scene = ["part.cfg", "nested.cfg"]; scale = "r * f"; } );\n' >"$c/compound.cfg"
+		printf 'model = "planar";\ncount = "3 * F";\norgans = ( { object = "D"; scene = "deep.cfg"; tilt = "10 * f"; } );\n' >"$c/deep-compound.cfg"
 		# Collision scenes run only with a count (see the harness).
 		for s in scenes/*.cfg; do
 			{ echo 'count = 400;'; cat "$s"; } >"$c/count-${s##*/}"
@@ -23,6 +24,25 @@ for f in ${*:-fuzz_scene fuzz_expr fuzz_template}; do
 	fuzz_expr) grep -ho '"[^"]*"' scenes/*.cfg tests/bad/expr-*.cfg |
 		tr -d '"' | awk '{ f = sprintf("%s/seed%d", c, NR); printf "%s", $0 > f; close(f) }' c="$c" ;;
 	fuzz_template) cp templates/*.tmpl tests/bad-pov/*.tmpl "$c"/ ;;
+	fuzz_set) i=0
+		# An argument, then a scene, as the harness reads them.
+		for a in 'count=300' 'planar.scale=0.05' 'organs.1.tilt="20 * f"' \
+		    'planar={ scale = 0.1; }' 'stretch=[1.0, 2.0, 1.0]' \
+		    'collision.receptacle.shape="cone"' 'Floret:count=3' \
+		    'organs.9.scale=1' 'count.x=1' 'count=1+'; do
+			for s in scenes/sunflower.cfg scenes/coneflower.cfg \
+			    scenes/pinecone.cfg; do
+				{ printf '%s\n' "$a"; cat "$s"; } >"$c/seed$i"
+				i=$((i + 1))
+			done
+		done ;;
+	fuzz_obj) cp scenes/organs/*.obj scenes/organs/*.mtl tests/gltf/*.obj \
+		tests/gltf/*.mtl tests/bad-gltf/*.obj tests/bad-gltf/*.mtl "$c"/ ;;
+	# Names of every kind: identifiers, the materials, and the bytes
+	# of the escaping test.
+	fuzz_json) grep -h '^usemtl\|^newmtl' scenes/organs/* tests/gltf/* |
+		awk '{ f = sprintf("%s/seed%d", c, NR); printf "%s", $2 > f; close(f) }' c="$c"
+		printf 'a"b\\c\001d\377\303\274\355\240\200' >"$c/bytes" ;;
 	esac
 	echo "== $f, $t s"
 	./build-fuzz/$f -max_total_time="$t" -max_len=8192 -timeout=10 \
