@@ -28,6 +28,7 @@
 #include "diag.h"
 #include "mem.h"
 #include "model.h"
+#include "parastichy.h"
 
 enum { IN_GROWTH, IN_START, IN_TRANSIENT, IN_KERNEL, IN_EXPONENT, IN_RADII,
 	IN_OUTER, IN_DOME, IN__N };
@@ -47,6 +48,14 @@ struct inhibition {
 	double		 dome;		/* height of the centre over the rim */
 };
 
+/*
+ * The default transient, in primordia, where G is at least TRANSIENT_G;
+ * slower growth passes more bifurcations on its way down and needs a
+ * longer one (transient_for()).
+ */
+#define TRANSIENT	30
+#define TRANSIENT_G	0.003
+
 static const char *const kernel_names[] = { "power", "gaussian", NULL };
 static const char *const radii_names[] = { "grown", "vogel", NULL };
 
@@ -61,8 +70,8 @@ static const struct row inhibition_rows[] = {
 	  .lo = 0, .hi = 100, .flags = F_LO_OPEN, .def = 2, .defstr = "2",
 	  .doc = "G of the young meristem, fading to growth" },
 	[IN_TRANSIENT] = { .name = "transient", .type = T_FLOAT,
-	  .off = I(transient), .lo = 0, .hi = HUGE_VAL, .def = 30,
-	  .defstr = "30", .unit = "primordia",
+	  .off = I(transient), .lo = 0, .hi = HUGE_VAL, .def = TRANSIENT,
+	  .defstr = "30, longer below G = 0.003", .unit = "primordia",
 	  .doc = "primordia over which start fades; 0: none" },
 	[IN_KERNEL] = { .name = "kernel", .type = T_CHOICE, .off = I(kernel),
 	  .words = kernel_names, .defstr = "power",
@@ -71,10 +80,11 @@ static const struct row inhibition_rows[] = {
 	  .off = I(exponent), .lo = 0, .hi = 64, .flags = F_LO_OPEN, .def = 3,
 	  .defstr = "3", .doc = "s of the power law" },
 	[IN_RADII] = { .name = "radii", .type = T_CHOICE, .off = I(radii),
-	  .words = radii_names, .defstr = "grown",
-	  .doc = "grown: where the growth took them; vogel: c sqrt(age)" },
+	  .words = radii_names, .def = RADII_VOGEL, .defstr = "vogel",
+	  .doc = "vogel: c sqrt(age); grown: where the growth took them" },
 	[IN_OUTER] = { .name = "outer", .type = T_FLOAT, .off = I(outer),
-	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .defstr = "none",
+	  .lo = 0, .hi = HUGE_VAL, .flags = F_LO_OPEN, .def = 1,
+	  .defstr = "1 (vogel), none (grown)",
 	  .unit = "length",
 	  .doc = "radius of the oldest primordium; the head is scaled to it" },
 	[IN_DOME] = { .name = "dome", .type = T_FLOAT, .off = I(dome),
@@ -88,7 +98,7 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 
 #define R0		1.0	/* the meristem's radius: the unit */
 #define AGE_MAX		700	/* e^700: the largest radius a double holds */
-#define GROWTH_MIN	0.001	/* the slowest growth searched surely */
+#define GROWTH_MIN	0.0005	/* the slowest growth searched surely */
 #define MODES		80	/* of the power law's far field */
 #define FAR_TAIL	1e-12	/* its truncation, of a primordium's pull */
 #define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
@@ -1029,31 +1039,23 @@ field_add(struct field *F, double th)
 
 /*
  * Each organ's radius: half the distance to its nearest neighbour, so
- * the discs touch as the primordia did.  Neighbours in space are near
- * in index (the parastichy numbers apart), so the k on either side do.
+ * the discs touch as the primordia did.  Found in space (a k-d tree),
+ * not among the organs near in index: laid out at Vogel's radii the
+ * first primordia's neighbours may be many parastichy numbers apart.
  */
 static void
-contact_radii(struct result *res, size_t k)
+contact_radii(struct result *res)
 {
-	size_t N = res->count;
+	double *d = xcalloc(res->count ? res->count : 1, sizeof(*d));
 
-	for (size_t i = 0; i < N; i++) {
+	para_nearest(res, d);
+	for (size_t i = 0; i < res->count; i++) {
 		struct organ *o = &res->organs[i];
-		size_t lo = i > k ? i - k : 0, hi = i + k < N ? i + k : N - 1;
-		double best = HUGE_VAL;
 
-		for (size_t j = lo; j <= hi; j++) {
-			const struct organ *p = &res->organs[j];
-			double dx = p->pos[0] - o->pos[0], dy = p->pos[1] -
-			    o->pos[1], dz = p->pos[2] - o->pos[2];
-			double d = dx * dx + dy * dy + dz * dz;
-
-			if (j != i && d < best)
-				best = d;
-		}
-		o->radius = isinf(best) ? 1 : sqrt(best) / 2;
+		o->radius = isfinite(d[i]) ? d[i] / 2 : 1;
 		o->scale = o->radius;
 	}
+	free(d);
 }
 
 /* How many recent primordia cut the circle at growth G: 3 sqrt(2 pi / G). */
@@ -1083,6 +1085,21 @@ settled(const double *phi, size_t n, double *mean, double *spread)
 	*spread = k > 1 ? sqrt(fmax(0, sum2 / (double)k - *mean * *mean)) : 0;
 }
 
+/*
+ * The default transient for the slowest growth G of a run.  Each
+ * bifurcation on the way down to G needs its own primordia to settle,
+ * and there are more of them the slower the growth: measured, the
+ * shortest transient that still reaches the Fibonacci branch is 30 at
+ * G = 0.0015, 40 at 0.001, 50 at 0.0007 and 60 at 0.0005, about
+ * G^-0.6; this gives half as much again, 30 (0.003 / G)^0.6.
+ */
+static double
+transient_for(double G)
+{
+	return G >= TRANSIENT_G ? TRANSIENT :
+	    TRANSIENT * pow(TRANSIENT_G / G, 0.6);
+}
+
 int
 inhibition_place(const struct scene *sc, struct result *res, int how)
 {
@@ -1090,7 +1107,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	struct field F = { .P = P, .hs = P->exponent / 2 };
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 	size_t N;
-	double mean, spread, flip = 1, rim, kdome, scale = 1, gmin, *born;
+	double mean, spread, flip = 1, rim, kdome, scale, gmin, *born, T;
 	struct cut *cuts;
 	size_t terms = 0;
 	struct gap *gaps;
@@ -1121,9 +1138,10 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 			return -1;
 		}
 		/*
-		 * Below 0.001 the gaps among the recent primordia are too
-		 * fine for the candidate search to be sure of the global
-		 * minimum (the tests check down to 0.001).
+		 * The search is exact at any G (its gaps' lower bounds are
+		 * checked in the tests), but below 0.0005 a primordium
+		 * looks at more than 330 recent ones and costs as much as a
+		 * hundred at the usual G; the tests check down to 0.0005.
 		 */
 		if (!(g >= GROWTH_MIN) || g > 100) {
 			diag(ST_SCENE, sc->file, P->growth.line, 0,
@@ -1132,6 +1150,15 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 			free(F.S);
 			return -1;
 		}
+		F.S[n] = g;
+		gmin = fmin(gmin, g);
+	}
+	T = P->given[IN_TRANSIENT] ? P->transient : transient_for(gmin);
+	/* Now the least G as faded, which sizes the search's arrays. */
+	gmin = HUGE_VAL;
+	for (size_t n = 1; n <= N; n++) {
+		double g = F.S[n];
+
 		/*
 		 * A young meristem is small, so it grows fast for its size:
 		 * start fades into growth (geometrically, so that every
@@ -1140,8 +1167,8 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		 * Douady and Couder's slowly falling G.  From the symmetric
 		 * first two at a fixed small G it may lock into other modes.
 		 */
-		if (P->transient > 0)
-			g *= pow(P->start / g, exp(-(double)n / P->transient));
+		if (T > 0)
+			g *= pow(P->start / g, exp(-(double)n / T));
 		F.S[n] = F.S[n - 1] + g;
 		gmin = fmin(gmin, g);
 	}
@@ -1225,13 +1252,18 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	 * Where each one is when the last is born, organ i at R0 e^(S[N-1] -
 	 * S[i]); or, laid out as Vogel's, at sqrt(age + 1/2) with the angles
 	 * that emerged: the growth's radii span e^(sum of G), too many
-	 * orders of magnitude for a picture of a whole head.
+	 * orders of magnitude for a picture of a whole head.  Vogel's are
+	 * scaled so that the oldest lies at outer (1 unless given), so a
+	 * scene with only model and count frames like the planar head;
+	 * grown radii keep the meristem's as the unit unless outer is
+	 * given (scaled to 1 the newest of e^700 would be too small for
+	 * their squares, which the parastichies measure).
 	 */
-	if (P->given[IN_OUTER])
-		scale = P->outer / (P->radii == RADII_VOGEL ?
-		    sqrt((double)N - 0.5) : R0 * exp(F.S[N - 1] - F.S[0]));
-	rim = (P->radii == RADII_VOGEL ? sqrt((double)N - 0.5) :
-	    R0 * exp(F.S[N - 1] - F.S[0])) * scale;
+	rim = P->radii == RADII_VOGEL ? sqrt((double)N - 0.5) :
+	    R0 * exp(F.S[N - 1] - F.S[0]);
+	scale = P->given[IN_OUTER] || P->radii == RADII_VOGEL ?
+	    P->outer / rim : 1;
+	rim *= scale;
 	kdome = rim > 0 ? 2 * P->dome / (rim * rim) : 0;
 
 	result_init(res, N);
@@ -1250,7 +1282,11 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 			phi += 360;
 		frame_revolution(o, phi, rho, z, 1, -kdome * rho);
 	}
-	contact_radii(res, F.near);
+	contact_radii(res);
+	/* Rays only where every angle is the same (alternate leaves). */
+	if (spread > 1e-9 || !divergence_rays(mean, N, &res->rays_p,
+	    &res->rays))
+		res->rays = res->rays_p = 0;
 	result_info(res, "settled", 2, mean, spread);
 	/* 99.5016: the Lucas angle, 360 / (3 + tau^-1)... of the 1, 3 series. */
 	result_info_text(res, "regime", fabs(mean - 180) < 5 ? "distichous" :
@@ -1294,4 +1330,5 @@ const struct model inhibition_model = {
 	.size = sizeof(struct inhibition),
 	.run = inhibition_run,
 	.svg = PROJ_TOP,
+	.emerges = 1,
 };

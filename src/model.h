@@ -24,6 +24,8 @@ struct model {
 	enum projection	 svg;
 	int		 rim_last;	/* the rim or base is the last organs
 					   (planar), not the first */
+	int		 emerges;	/* the angles are found, not given: the
+					   model sets rays itself */
 };
 
 /* Every model, NULL-terminated (models.c); at most MODELS_MAX. */

@@ -51,8 +51,9 @@ model_run(const struct scene *sc, struct result *res)
 	res->frame = sc->frame_no;
 	res->frames = 1;
 	res->frame_f = sc->frame_f;
-	if (!divergence_rays(res->divergence, res->count, &res->rays_p,
-	    &res->rays))
+	/* A mean of angles that differ lays out no rays. */
+	if (!sc->model->emerges && !divergence_rays(res->divergence,
+	    res->count, &res->rays_p, &res->rays))
 		res->rays = res->rays_p = 0;
 	if (organs_apply(sc, res) != 0) {
 		result_free(res);

@@ -234,14 +234,27 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 			const struct para_zone *rim = r->rim_last ?
 			    &z[nz - 1] : &z[0];
 			double mn[2] = { rim->m, rim->n };
+			char seen[80];
 
-			line(s, "parastichies", 2, mn);
+			/* A transition says what it saw, never a false pair. */
+			if (rim->m == 0) {
+				para_seen_text(rim, seen, sizeof(seen));
+				sink_puts(s, "parastichies: ");
+				sink_puts(s, seen);
+				sink_putc(s, '\n');
+			} else
+				line(s, "parastichies", 2, mn);
 			sink_puts(s, "parastichies-along:");
 			for (size_t k = 0; k < nz; k++) {
 				sink_puts(s, k ? "; " : " ");
-				sink_uint(s, (unsigned long long)z[k].m);
-				sink_putc(s, '/');
-				sink_uint(s, (unsigned long long)z[k].n);
+				if (z[k].m == 0) {
+					para_seen_text(&z[k], seen, sizeof(seen));
+					sink_puts(s, seen);
+				} else {
+					sink_uint(s, (unsigned long long)z[k].m);
+					sink_putc(s, '/');
+					sink_uint(s, (unsigned long long)z[k].n);
+				}
 				sink_puts(s, " from organ ");
 				sink_uint(s, (unsigned long long)z[k].from);
 				sink_puts(s, " (rho ");
@@ -251,7 +264,11 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 				sink_putc(s, ')');
 			}
 			sink_putc(s, '\n');
-		}
+		} else
+			sink_puts(s, r->rays > 0 ? "parastichies: none, the "
+			    "organs lie on straight rays\n" :
+			    "parastichies: none, no organ has contacts turning "
+			    "both ways\n");
 	}
 	convergents(s, r);
 	if (r->rays > 0) {

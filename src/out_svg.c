@@ -563,8 +563,17 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 
 		double at = lo[0];
 
-		snprintf(line, sizeof(line), "parastichies %d and %d at the "
-		    "%s", b->m, b->n, r->rim_last ? "rim" : "base");
+		/* Seen from above the first or last organs are the rim. */
+		const char *edge = P->unrolled ? "base" : "rim";
+		char seen[80];
+
+		if (b->m == 0) {
+			para_seen_text(b, seen, sizeof(seen));
+			snprintf(line, sizeof(line), "no one pair at the %s: "
+			    "a %s", edge, seen);
+		} else
+			snprintf(line, sizeof(line), "parastichies %d and %d "
+			    "at the %s", b->m, b->n, edge);
 		text(s, lo[0], -hi[1] + 3.6 * em, em, "#222", line);
 		/* The families' key: each number in its colour. */
 		text(s, at, -hi[1] + 4.8 * em, 0.8 * em, "#222", "families:");

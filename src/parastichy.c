@@ -134,9 +134,10 @@ near_add(struct near *nb, size_t j, double d2)
 	nb->j[k] = j;
 }
 
+/* The K nearest to p but self, or of those before self if earlier. */
 static void
 query(const struct kd *T, size_t lo, size_t hi, const double p[3],
-    size_t self, struct near *nb)
+    size_t self, int earlier, struct near *nb)
 {
 	size_t mid;
 	const double *q;
@@ -150,17 +151,17 @@ query(const struct kd *T, size_t lo, size_t hi, const double p[3],
 	q = T->o[T->ix[mid]].pos;
 	for (int a = 0; a < 3; a++)
 		d2 += (q[a] - p[a]) * (q[a] - p[a]);
-	if (T->ix[mid] != self)
+	if (earlier ? T->ix[mid] < self : T->ix[mid] != self)
 		near_add(nb, T->ix[mid], d2);
 	diff = p[axis] - q[axis];
 	if (diff < 0) {
-		query(T, lo, mid, p, self, nb);
+		query(T, lo, mid, p, self, earlier, nb);
 		if (nb->n < K || diff * diff < nb->d2[nb->n - 1])
-			query(T, mid + 1, hi, p, self, nb);
+			query(T, mid + 1, hi, p, self, earlier, nb);
 	} else {
-		query(T, mid + 1, hi, p, self, nb);
+		query(T, mid + 1, hi, p, self, earlier, nb);
 		if (nb->n < K || diff * diff < nb->d2[nb->n - 1])
-			query(T, lo, mid, p, self, nb);
+			query(T, lo, mid, p, self, earlier, nb);
 	}
 }
 
@@ -182,6 +183,34 @@ kd_free(struct kd *T)
 	free(T->axis);
 }
 
+/* The nearest earlier neighbour of i in nb on each side, or -1. */
+static void
+sides(const struct result *r, size_t i, const struct near *nb,
+    long long side[2])
+{
+	const double *p = r->organs[i].pos;
+	double ro = hypot(p[0], p[1]);
+
+	for (int k = 0; k < nb->n; k++) {
+		const double *q = r->organs[nb->j[k]].pos;
+		double rq = hypot(q[0], q[1]);
+		/* Of unit vectors: radii may span e^700 (grown radii). */
+		double turn = (p[0] / ro) * (q[1] / rq) - (p[1] / ro) *
+		    (q[0] / rq);
+		int s = turn > 0;
+
+		/*
+		 * On the same line through the axis (alternate leaves, a
+		 * rank of a whorl) a neighbour turns neither way: rounding
+		 * must not make it a parastichy.
+		 */
+		if (!(fabs(turn) > 1e-9))
+			continue;
+		if (nb->j[k] < i && side[s] < 0)
+			side[s] = (long long)nb->j[k];
+	}
+}
+
 /* Organ i's pair, from the tree. */
 static void
 pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
@@ -194,19 +223,23 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 	/* On the axis no organ turns either way. */
 	if (hypot(o->pos[0], o->pos[1]) < 1e-9 * (o->radius + 1e-300))
 		return;
-	query(T, 0, r->count, o->pos, i, &nb);
+	query(T, 0, r->count, o->pos, i, 0, &nb);
 	/*
 	 * Earlier neighbours only: a parastichy through i has a neighbour
 	 * on either side of it, i - m one way and i + m the other, so only
 	 * the earlier ones tell the two families apart.  The side is the
 	 * sign of the turn from i to the neighbour about the axis.
 	 */
-	for (int k = 0; k < nb.n; k++) {
-		const struct organ *q = &r->organs[nb.j[k]];
-		int s = o->pos[0] * q->pos[1] - o->pos[1] * q->pos[0] > 0;
-
-		if (nb.j[k] < i && side[s] < 0)
-			side[s] = (long long)nb.j[k];
+	sides(r, i, &nb, side);
+	if (side[0] < 0 || side[1] < 0) {
+		/*
+		 * Where the radii grow fast (the inhibition model's grown
+		 * radii) every later organ may be nearer than any earlier
+		 * one: then the earlier ones alone, a slower search.
+		 */
+		nb.n = 0;
+		query(T, 0, r->count, o->pos, i, 1, &nb);
+		sides(r, i, &nb, side);
 	}
 	if (side[0] < 0 || side[1] < 0)
 		return;
@@ -218,6 +251,23 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 		pair[0] = pair[1];
 		pair[1] = t;
 	}
+}
+
+
+void
+para_nearest(const struct result *r, double *d)
+{
+	struct kd T;
+
+	kd_init(&T, r);
+	for (size_t t = 0; t < r->count; t++) {
+		size_t i = T.ix[t];
+		struct near nb = { .n = 0 };
+
+		query(&T, 0, r->count, r->organs[i].pos, i, 0, &nb);
+		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) : HUGE_VAL;
+	}
+	kd_free(&T);
 }
 
 void
@@ -251,9 +301,10 @@ tally_cmp(const void *a, const void *b)
 
 /*
  * The most common pair among the n of pair, or 0 0; of equally common
- * ones the one met first.  Sorted, so a sample of thousands is cheap.
+ * ones the one met first; how many organs hold it.  Sorted, so a sample
+ * of thousands is cheap.
  */
-static void
+static size_t
 modal(const int (*pair)[2], size_t n, int out[2])
 {
 	struct tally *t = xcalloc(n ? n : 1, sizeof(*t));
@@ -276,6 +327,95 @@ modal(const int (*pair)[2], size_t n, int out[2])
 		}
 	}
 	free(t);
+	return best;
+}
+
+static int
+gcd(int a, int b)
+{
+	while (b != 0) {
+		int t = a % b;
+
+		a = b;
+		b = t;
+	}
+	return a;
+}
+
+/* Organ k's angle about the axis, in turns. */
+static double
+turns(const struct result *r, long long k)
+{
+	return atan2(r->organs[k].pos[1], r->organs[k].pos[0]) / (2 * M_PI);
+}
+
+/*
+ * Whether m and n, the contacts of organ i, span the lattice the organs
+ * make in index and turn, as the two families of a spiral do: going
+ * back m organs winds p whole turns and n organs q turns, with m q - n p
+ * = +-1.  Coprime m and n are not enough: 13 and 55 at the golden angle
+ * wind 5 and 21 turns, 13 x 21 - 55 x 5 = -2, and are two halves of
+ * different patterns, where the lattice's own pair is 21/34.  The turns
+ * are the steps from organ to organ, each the shorter way round, summed.
+ */
+static int
+spans(const struct result *r, long long i, int m, int n)
+{
+	double w = 0, wm = 0, prev;
+	long long p, q;
+
+	if (i < n)
+		return 0;
+	prev = turns(r, i - n);
+	for (long long k = i - n + 1; k <= i; k++) {
+		double t = turns(r, k);
+
+		w += remainder(t - prev, 1.0);
+		prev = t;
+		if (k == i - m)
+			wm = w;
+	}
+	/* Back from i: m organs wound w - wm turns, n organs w. */
+	p = llround(w - wm);
+	q = llround(w);
+	return llabs((long long)m * q - (long long)n * p) == 1;
+}
+
+/*
+ * A run shows one family pair when its most common pair is held by at
+ * least half its organs and spans the lattice at an organ holding it:
+ * two families of one spiral, which also share no factor, so 34/68 is
+ * two pairs' contacts mixed (a transition), never a pattern of its own.
+ */
+static int
+family_pair(const struct result *r, long long at, const int m[2],
+    size_t held, size_t n)
+{
+	return m[0] > 0 && 2 * held >= n && gcd(m[0], m[1]) == 1 &&
+	    spans(r, at, m[0], m[1]);
+}
+
+/* The larger number a zone names: its pair's, or a transition's largest. */
+static int
+zone_n(const struct para_zone *z)
+{
+	int n = z->n;
+
+	for (int k = 0; k < z->nseen; k++)
+		if (z->seen[k][1] > n)
+			n = z->seen[k][1];
+	return n;
+}
+
+int
+para_seen_text(const struct para_zone *z, char *buf, size_t size)
+{
+	int len = snprintf(buf, size, "transition");
+
+	for (int k = 0; k < z->nseen && len >= 0 && (size_t)len < size; k++)
+		len += snprintf(buf + len, size - (size_t)len, " %d/%d",
+		    z->seen[k][0], z->seen[k][1]);
+	return len;
 }
 
 size_t
@@ -291,7 +431,8 @@ para_zones(const struct result *r, const int (*pair)[2], struct para_zone *z,
 	for (size_t k = 0; k < runs && N > 0; k++) {
 		size_t from = N * k / runs, to = N * (k + 1) / runs;
 		size_t step = to - from > SAMPLE ? (to - from) / SAMPLE : 1, n = 0;
-		int m[2];
+		int m[2], fam;
+		size_t held, at;
 
 		/* The modal pair of an even sample of a long run is its own. */
 		for (size_t i = from; i < to && n < SAMPLE; i += step, n++)
@@ -299,18 +440,53 @@ para_zones(const struct result *r, const int (*pair)[2], struct para_zone *z,
 				memcpy(s[n], pair[i], sizeof(s[0]));
 			else
 				pair_at(&T, r, i, s[n]);
-		modal((const int (*)[2])s, n, m);
+		held = modal((const int (*)[2])s, n, m);
 		if (m[0] == 0)
 			continue;
-		if (nz > 0 && z[nz - 1].m == m[0] && z[nz - 1].n == m[1])
+		/* The last organ holding it: the most earlier ones to wind. */
+		at = n - 1;
+		while (s[at][0] != m[0] || s[at][1] != m[1])
+			at--;
+		fam = family_pair(r, (long long)(from + at * step), m, held, n);
+		/*
+		 * A run that holds a zone's pair less than half the time
+		 * at its ends (the few organs at a pole or the first ones)
+		 * belongs to it when that pair is still its most common.
+		 */
+		if (nz > 0 && z[nz - 1].m == 0 && z[nz - 1].nseen == 1 &&
+		    fam && z[nz - 1].seen[0][0] == m[0] &&
+		    z[nz - 1].seen[0][1] == m[1]) {
+			z[nz - 1].m = m[0];
+			z[nz - 1].n = m[1];
+			z[nz - 1].nseen = 0;
 			continue;
+		}
+		if (!fam && nz > 0 && z[nz - 1].m == m[0] && z[nz - 1].n ==
+		    m[1])
+			continue;
+		if (nz > 0 && (fam ? z[nz - 1].m == m[0] && z[nz - 1].n ==
+		    m[1] : z[nz - 1].m == 0)) {
+			/* A transition goes on: note a pair it had not shown. */
+			struct para_zone *t = &z[nz - 1];
+			int k = 0;
+
+			while (!fam && k < t->nseen && (t->seen[k][0] != m[0] ||
+			    t->seen[k][1] != m[1]))
+				k++;
+			if (!fam && k == t->nseen && k < PARA_SEEN) {
+				t->seen[k][0] = m[0];
+				t->seen[k][1] = m[1];
+				t->nseen++;
+			}
+			continue;
+		}
 		if (nz == zmax)
 			break;
-		z[nz].from = (long long)from;
-		z[nz].m = m[0];
-		z[nz].n = m[1];
-		z[nz].rho = hypot(r->organs[from].pos[0], r->organs[from].pos[1]);
-		z[nz].z = r->organs[from].pos[2];
+		z[nz] = (struct para_zone){ .from = (long long)from,
+		    .m = fam ? m[0] : 0, .n = fam ? m[1] : 0,
+		    .seen = { { m[0], m[1] } }, .nseen = fam ? 0 : 1,
+		    .rho = hypot(r->organs[from].pos[0], r->organs[from].pos[1]),
+		    .z = r->organs[from].pos[2] };
 		nz++;
 	}
 	/*
@@ -318,7 +494,7 @@ para_zones(const struct result *r, const int (*pair)[2], struct para_zone *z,
 	 * contacts: a zone that ends before about 1.5 n of the next zone's
 	 * pair is their artefact, not a pattern.
 	 */
-	while (nz > 1 && (double)z[1].from <= 1.5 * z[1].n) {
+	while (nz > 1 && (double)z[1].from <= 1.5 * zone_n(&z[1])) {
 		memmove(z, z + 1, (nz - 1) * sizeof(*z));
 		nz--;
 	}
@@ -450,20 +626,14 @@ int
 para_want_check(const struct scene *sc, int line, const char *path,
     const struct int_list *want)
 {
-	int a, b;
+	int a;
 
 	if (want->n != 2 || want->v[0] >= want->v[1]) {
 		scene_error(sc, line, "%s must be a pair [m, n] with m < n",
 		    path);
 		return -1;
 	}
-	for (a = want->v[0], b = want->v[1]; b != 0;) {
-		int t = a % b;
-
-		a = b;
-		b = t;
-	}
-	if (a != 1) {
+	if ((a = gcd(want->v[0], want->v[1])) != 1) {
 		scene_error(sc, line, "%s [%d, %d] have the common factor %d: "
 		    "a single spiral shows coprime numbers", path, want->v[0],
 		    want->v[1], a);

@@ -6,10 +6,20 @@
 
 #include "organ.h"
 
-/* A stretch of the structure with one contact pair, from organ from on. */
+/* Most pairs a transition lists, in the order its runs showed them. */
+#define PARA_SEEN	3
+
+/*
+ * A stretch of the structure from organ from on: one family pair m/n
+ * (coprime, held by at least half its organs), or, where m is 0, a
+ * transition, whose runs' most common pairs were seen[0..nseen) (not
+ * pairs: they may share a factor, 34/68, or hold few organs).
+ */
 struct para_zone {
 	long long	 from;
 	int		 m, n;
+	int		 seen[PARA_SEEN][2];
+	int		 nseen;
 	double		 rho, z;	/* where organ from lies */
 };
 
@@ -21,12 +31,19 @@ struct para_zone {
  */
 void	para_pairs(const struct result *, int (*pair)[2]);
 
+/* Each organ's distance to its nearest other organ (HUGE_VAL if alone). */
+void	para_nearest(const struct result *, double *d);
+
 /*
- * The zones along the structure in index order; how many (<= zmax).
- * pair: every organ's, or NULL to measure an even sample of each run.
+ * The zones along the structure in index order, pairs and transitions;
+ * how many (<= zmax).  pair: every organ's, or NULL to measure an even
+ * sample of each run.
  */
 size_t	para_zones(const struct result *, const int (*pair)[2],
 	    struct para_zone *, size_t zmax);
+
+/* Writes "transition 47/60 21/42" for a transition's zone; its length. */
+int	para_seen_text(const struct para_zone *, char *, size_t);
 
 /* Measure the pair at the rim or base with the parameter at x; 0 or -1. */
 typedef int para_measure_fn(void *ctx, double x, int pair[2]);

@@ -12,7 +12,8 @@ tmp=$FIGURES/divergence.dat
 for series in falling fixed; do
 	for G in 3 2 1.5 1.2 1 0.8 0.65 0.5 0.4 0.32 0.26 0.2 0.16 0.13 0.1 \
 	    0.08 0.065 0.05 0.04 0.032 0.026 0.02 0.016 0.013 0.01 0.008 \
-	    0.0065 0.005 0.004 0.0032 0.0026 0.002; do
+	    0.0065 0.005 0.004 0.0032 0.0026 0.002 0.0016 0.0013 0.001 \
+	    0.0008 0.00065 0.0005; do
 		N=$(echo "$G" | awk '{ n = int(2 / $1); n = n < 150 ? 150 : n > 900 ? 900 : n; if ($1 * n > 600) n = int(600 / $1); print n }')
 		extra=
 		[ $series = fixed ] && extra='transient = 0;'
@@ -33,7 +34,7 @@ done
 awk '
 BEGIN {
 	W = 720; H = 420; L = 70; R = 20; T = 40; B = 50
-	x0 = log(0.002); x1 = log(3); y0 = 80; y1 = 190
+	x0 = log(0.0005); x1 = log(3); y0 = 80; y1 = 190
 	printf "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"12\">\n", W, H, W, H
 	printf "<title>Divergence against growth G, from the inhibition model</title>\n"
@@ -41,7 +42,7 @@ BEGIN {
 	printf "<text x=\"%d\" y=\"22\" font-size=\"14\">Divergence angle against growth G (phyllo-export, inhibition model, power law s = 3)</text>\n", L
 	for (k = 0; k < 2; k++) { }
 	# axes and grid
-	n = split("0.002 0.005 0.01 0.02 0.05 0.1 0.2 0.5 1 2", gx, " ")
+	n = split("0.0005 0.001 0.002 0.005 0.01 0.02 0.05 0.1 0.2 0.5 1 2", gx, " ")
 	for (i = 1; i <= n; i++) {
 		x = L + (log(gx[i]) - x0) / (x1 - x0) * (W - L - R)
 		printf "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#ddd\"/>\n", x, T, x, H - B
@@ -66,7 +67,8 @@ BEGIN {
 END {
 	printf "<circle cx=\"%d\" cy=\"%d\" r=\"4\" fill=\"#1060b0\"/><text x=\"%d\" y=\"%d\">G falling slowly from 2 (the default)</text>\n", W - 330, T + 20, W - 320, T + 24
 	printf "<circle cx=\"%d\" cy=\"%d\" r=\"4\" fill=\"#c07010\"/><text x=\"%d\" y=\"%d\">G fixed from the first two (transient = 0)</text>\n", W - 330, T + 40, W - 320, T + 44
-	printf "<text x=\"%d\" y=\"%d\" fill=\"#b05050\">golden angle 137.5&#176;</text>\n", L + 8, T + (Y1 - 137.5) / (Y1 - Y0) * (H - T - B) - 4
+	# Right, below the line: the default series sits on it further left.
+	printf "<text x=\"%d\" y=\"%d\" fill=\"#b05050\" text-anchor=\"end\">golden angle 137.5&#176;</text>\n", W - R - 8, T + (Y1 - 137.5) / (Y1 - Y0) * (H - T - B) + 16
 	print "</svg>"
 }' "$tmp" >"$FIGURES/divergence.svg" || exit 1
 echo "$FIGURES/divergence.svg"

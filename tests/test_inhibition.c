@@ -251,37 +251,102 @@ bounds(const char *what, const char *cfg)
 	scene_free(&sc);
 }
 
+/*
+ * The default start follows the Fibonacci branch at every G from 0.5
+ * down to 0.0005, the slowest allowed: the contact pair at the meristem
+ * (the newest organs, measured with grown radii, where the contacts are
+ * those the primordia were born with) is consecutive Fibonacci numbers,
+ * and the settled divergence is that branch's: within 0.3 degrees of
+ * the golden angle once G <= 0.05, and within 3.5 above, where the
+ * branch swings about it between bifurcations (140.4 at G = 0.2 with
+ * 2/3, 136.8 at 0.1 with 3/5, as in Douady and Couder's diagram).
+ */
+static void
+branch(void)
+{
+	static const double G[] = { 0.5, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01,
+	    0.005, 0.002, 0.001, 0.0007, 0.0005 };
+
+	for (size_t k = 0; k < sizeof(G) / sizeof(G[0]); k++) {
+		char what[64], cfg[160];
+		int n = (int)(300 / G[k]);
+
+		n = n > 1500 ? 1500 : n;
+		snprintf(what, sizeof(what), "default start, G = %g", G[k]);
+		snprintf(cfg, sizeof(cfg), "count = %d; inhibition = { growth "
+		    "= %g; radii = \"grown\"; };", n, G[k]);
+		settles(what, cfg, GOLDEN_ANGLE, G[k] <= 0.05 ? 0.3 : 3.5, 1);
+	}
+}
+
+/*
+ * With only a count, a head a scene can frame: the oldest at radius 1
+ * (radii laid out as Vogel's), and organ sizes within 100 times of
+ * each other.
+ */
+static void
+framed(void)
+{
+	struct scene sc;
+	struct result res;
+	double rmax = 0, smin = HUGE_VAL, smax = 0;
+
+	if (run("count = 600;", &sc, &res) != 0) {
+		check(0, "default layout: runs");
+		scene_free(&sc);
+		return;
+	}
+	for (size_t i = 0; i < res.count; i++) {
+		const struct organ *o = &res.organs[i];
+
+		rmax = fmax(rmax, hypot(o->pos[0], o->pos[1]));
+		smin = fmin(smin, o->scale);
+		smax = fmax(smax, o->scale);
+	}
+	check(fabs(rmax - 1) < 1e-12 && smax < 100 * smin, "default layout: "
+	    "600 organs out to radius %.15g, sizes %.3g to %.3g", rmax, smin,
+	    smax);
+	result_free(&res);
+	scene_free(&sc);
+}
+
 int
 main(void)
 {
 	check_topic = "inhibition: ";
+	/* The checks read the growth from the positions: grown radii. */
 	minima("power law, G = 0.3", "count = 120; inhibition = { growth = "
-	    "0.3; };", 0.3, 3, 0, 3);
+	    "0.3; radii = \"grown\"; };", 0.3, 3, 0, 3);
 	minima("power law, G = 0.02", "count = 300; inhibition = { growth = "
-	    "0.02; };", 0.02, 3, 0, 11);
+	    "0.02; radii = \"grown\"; };", 0.02, 3, 0, 11);
 	/* Slow growth: many recent primordia shape the field. */
 	minima("power law, G = 0.001", "count = 1400; inhibition = { growth "
-	    "= 0.001; };", 0.001, 3, 0, 97);
+	    "= 0.001; radii = \"grown\"; };", 0.001, 3, 0, 97);
+	minima("power law, G = 0.0005, the slowest", "count = 1000; "
+	    "inhibition = { growth = 0.0005; radii = \"grown\"; };", 0.0005,
+	    3, 0, 83);
 	minima("power law s = 2, G = 0.1", "count = 150; inhibition = { "
-	    "growth = 0.1; exponent = 2; };", 0.1, 2, 0, 7);
+	    "growth = 0.1; exponent = 2; radii = \"grown\"; };", 0.1, 2, 0,
+	    7);
 	bounds("bounds, power law, G = 0.02", "count = 150; inhibition = { "
 	    "growth = 0.02; };");
 	bounds("bounds, power law, G = 0.003", "count = 150; inhibition = { "
 	    "growth = 0.003; };");
+	bounds("bounds, power law, G = 0.0005", "count = 400; inhibition = { "
+	    "growth = 0.0005; };");
 	bounds("bounds, power law s = 6, G = 0.2", "count = 120; inhibition = "
 	    "{ growth = 0.2; exponent = 6; };");
 	bounds("bounds, gaussian kernel", "count = 120; inhibition = { kernel "
 	    "= \"gaussian\"; };");
 	minima("gaussian kernel", "count = 150; inhibition = { kernel = "
-	    "\"gaussian\"; };", 0, 0, 1, 7);
-	settles("slow growth, G = 0.01", "count = 600; inhibition = { growth "
-	    "= 0.01; };", GOLDEN_ANGLE, 1, 1);
-	settles("slower growth, G = 0.002", "count = 1000; inhibition = { "
-	    "growth = 0.002; };", GOLDEN_ANGLE, 1, 1);
+	    "\"gaussian\"; radii = \"grown\"; };", 0, 0, 1, 7);
+	branch();
 	settles("fast growth, G = 2", "count = 100; inhibition = { growth = 2; "
 	    "};", 180, 1e-6, 0);
 	/* Seed 003: its Gaussian energy, 500 seeds, the golden angle. */
 	settles("seed 003's Gaussian energy, 500 primordia", "count = 500; "
-	    "inhibition = { kernel = \"gaussian\"; };", GOLDEN_ANGLE, 1, 1);
+	    "inhibition = { kernel = \"gaussian\"; radii = \"grown\"; };",
+	    GOLDEN_ANGLE, 1, 1);
+	framed();
 	return check_failures != 0;
 }

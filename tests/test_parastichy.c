@@ -265,10 +265,121 @@ inverse(void)
 		}
 }
 
+static int
+gcd(int a, int b)
+{
+	return b == 0 ? a : gcd(b, a % b);
+}
+
+/*
+ * A whorl: a bijugate head, two organs at each node on opposite sides,
+ * each node turned by half the golden angle from the last, as Vogel's
+ * radii.  Each family has two spirals, so an organ's contacts are
+ * 2m - 1 or 2m + 1 back as it is the first or second of its node
+ * (42/67 and 42/69 in turn): not one pair, so reported as a transition
+ * naming what it saw, never as a pair.
+ */
+static void
+bijugate(void)
+{
+	struct result res;
+	struct para_zone z[64];
+	size_t nz, npairs = 0;
+
+	result_init(&res, 2000);
+	for (size_t k = 0; k < res.count; k++) {
+		struct organ *o = &res.organs[k];
+		double node = (double)(k / 2), a = node * (GOLDEN_ANGLE / 2) *
+		    M_PI / 180 + (double)(k % 2) * M_PI;
+
+		o->pos[0] = sqrt(node + 0.5) * cos(a);
+		o->pos[1] = sqrt(node + 0.5) * sin(a);
+		o->radius = o->scale = 0.4;
+	}
+	nz = para_zones(&res, NULL, z, 64);
+	for (size_t k = 0; k < nz; k++)
+		npairs += z[k].m != 0;
+	check(nz > 0 && npairs == 0 && z[0].nseen > 0, "a bijugate head: %zu "
+	    "zones, %zu of them pairs (want none: a transition that names "
+	    "what it saw)", nz, npairs);
+	result_free(&res);
+}
+
+/* Alternate leaves on two ranks turn neither way: no pair at all. */
+static void
+distichous(void)
+{
+	struct scene sc;
+	struct result res;
+	struct para_zone z[64];
+	size_t nz = 0;
+
+	if (run("model = \"planar\"; count = 60; divergence = 180;", &sc,
+	    &res) == 0)
+		nz = para_zones(&res, NULL, z, 64);
+	check(res.count == 60 && nz == 0, "alternate leaves (180 degrees): %zu "
+	    "zones (want none: every neighbour is on the line through the "
+	    "axis)", nz);
+	result_free(&res);
+	scene_free(&sc);
+}
+
+/*
+ * The inhibition model's default head comes through a transient (its
+ * first primordia, at the rim), where 34/68 and 13/55 used to be read as
+ * pairs.  Every zone it calls a pair must be two families of one
+ * lattice: coprime, and m q - n p = +-1 where p and q are the whole
+ * turns m and n organs make at the zone's own mean divergence,
+ * measured here from the positions.
+ */
+static void
+inhibition_pairs(void)
+{
+	struct scene sc;
+	struct result res;
+	struct para_zone z[64];
+	size_t nz = 0, bad = 0, pairs = 0;
+	char what[128] = "";
+
+	if (run("model = \"inhibition\"; count = 600;", &sc, &res) == 0)
+		nz = para_zones(&res, NULL, z, 64);
+	for (size_t k = 0; k < nz; k++) {
+		long long from = z[k].from, to = k + 1 < nz ? z[k + 1].from :
+		    (long long)res.count;
+		double d = 0;
+		long long p, q;
+
+		if (z[k].m == 0)
+			continue;
+		pairs++;
+		for (long long i = from + 1; i < to; i++)
+			d += fabs(remainder(atan2(res.organs[i].pos[1],
+			    res.organs[i].pos[0]) - atan2(res.organs[i - 1].pos[1],
+			    res.organs[i - 1].pos[0]), 2 * M_PI));
+		d /= 2 * M_PI * (double)(to - from - 1);
+		p = llround(z[k].m * d);
+		q = llround(z[k].n * d);
+		if (gcd(z[k].m, z[k].n) != 1 ||
+		    llabs(z[k].m * q - z[k].n * p) != 1) {
+			bad++;
+			snprintf(what, sizeof(what), " (%d/%d from organ %lld)",
+			    z[k].m, z[k].n, from);
+		}
+	}
+	check(pairs > 3 && bad == 0, "inhibition, default head: %zu zones, "
+	    "%zu pairs, %zu not two families of one lattice%s", nz, pairs,
+	    bad, what);
+	result_free(&res);
+	scene_free(&sc);
+}
+
 int
 main(void)
 {
 	check_topic = "parastichies: ";
+	bijugate();
+	distichous();
+	inhibition_pairs();
 	vogel();
 	van_iterson();
 	collision_zones();
