@@ -87,3 +87,28 @@ try "a tall cone is unrolled, a flat head seen from above" true
 assert "pinecone unrolled" 'grep -q "cylindrical model, [0-9]* organs, unrolled" $OUT/pinecone.svg'
 assert "sunflower from above" 'grep -q "planar model, [0-9]* organs, from above" $OUT/sunflower.svg'
 end
+
+# A first scene of any model, only model and count set, gives a head a
+# scene can frame (extent 0.05 to 100 units, organ sizes within 100
+# times of each other) or one line naming the setting it needs by its
+# full path.  The models are the program's own list, so a sixth is
+# tried as it is added.
+models=$(printf 'model = "?";\n' | px --info - 2>&1 | sed -n 's/.*is not one of: \([a-z ]*\).*/\1/p')
+for m in $models; do
+	printf 'model = "%s";\ncount = 600;\n' "$m" >"$OUT/first.cfg"
+	try "model $m with only a count: a picture or one line naming what it needs" px --csv "$OUT/first.cfg"
+	if [ $rc -eq 0 ]; then
+		assert "extent between 0.05 and 100, sizes within 100x" 'awk -F, "NR > 1 {
+			for (k = 3; k <= 5; k++) { if (n == 0 || \$k < lo[k]) lo[k] = \$k; if (n == 0 || \$k > hi[k]) hi[k] = \$k }
+			if (n == 0 || \$15 < s0) s0 = \$15; if (\$15 > s1) s1 = \$15; n++ }
+			END { e = 0; for (k = 3; k <= 5; k++) if (hi[k] - lo[k] > e) e = hi[k] - lo[k]
+			exit !(n == 600 && e >= 0.05 && e <= 100 && s0 > 0 && s1 <= 100 * s0) }" $OUT/stdout'
+	else
+		assert "exit 1, one line" '[ $rc -eq 1 ] && [ $(wc -l <$OUT/stderr) -eq 1 ]'
+		assert "names a $m. setting by its full path" 'grep -q "^phyllo-export: .*first.cfg:[0-9]*: .*\\<$m\\.[a-z.]*" $OUT/stderr'
+	fi
+	end
+done
+try "the models' list was read from the program" true
+assert "five or more" '[ $(echo $models | wc -w) -ge 5 ]'
+end
