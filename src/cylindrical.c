@@ -17,6 +17,7 @@
 #include "diag.h"
 #include "mem.h"
 #include "model.h"
+#include "parastichy.h"
 
 enum { CY_RADIUS, CY_PARASTICHIES, CY_RISE, CY_LENGTH, CY__N };
 
@@ -59,18 +60,6 @@ struct pattern {
 	int	 m, n;
 };
 
-static int
-gcd(int a, int b)
-{
-	while (b != 0) {
-		int t = a % b;
-
-		a = b;
-		b = t;
-	}
-	return a;
-}
-
 /* The pattern from cylindrical.parastichies, with every check. */
 static int
 from_parastichies(const struct scene *sc, const struct cylindrical *cy,
@@ -85,10 +74,10 @@ from_parastichies(const struct scene *sc, const struct cylindrical *cy,
 		    "m < n", m, n);
 		return -1;
 	}
-	if (gcd(m, n) != 1) {
+	if (para_gcd(m, n) != 1) {
 		scene_error(sc, at, "parastichies (%d, %d) have the common "
 		    "factor %d: the pattern would not be a single spiral", m, n,
-		    gcd(m, n));
+		    para_gcd(m, n));
 		return -1;
 	}
 	p->m = m;

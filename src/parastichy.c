@@ -330,8 +330,8 @@ modal(const int (*pair)[2], size_t n, int out[2])
 	return best;
 }
 
-static int
-gcd(int a, int b)
+int
+para_gcd(int a, int b)
 {
 	while (b != 0) {
 		int t = a % b;
@@ -391,7 +391,7 @@ static int
 family_pair(const struct result *r, long long at, const int m[2],
     size_t held, size_t n)
 {
-	return m[0] > 0 && 2 * held >= n && gcd(m[0], m[1]) == 1 &&
+	return m[0] > 0 && 2 * held >= n && para_gcd(m[0], m[1]) == 1 &&
 	    spans(r, at, m[0], m[1]);
 }
 
@@ -633,7 +633,7 @@ para_want_check(const struct scene *sc, int line, const char *path,
 		    path);
 		return -1;
 	}
-	if ((a = gcd(want->v[0], want->v[1])) != 1) {
+	if ((a = para_gcd(want->v[0], want->v[1])) != 1) {
 		scene_error(sc, line, "%s [%d, %d] have the common factor %d: "
 		    "a single spiral shows coprime numbers", path, want->v[0],
 		    want->v[1], a);

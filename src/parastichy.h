@@ -76,6 +76,9 @@ double	para_design_radius(const struct scene *, int line, const char *path,
 	    const struct int_list *want, double rim, double rhi,
 	    para_place_fn *, void *ctx);
 
+/* The greatest common divisor of a, b >= 0: pairs are coprime. */
+int	para_gcd(int a, int b);
+
 /* A pair asked for at path, given at line: [m, n], 0 < m < n, coprime. */
 int	para_want_check(const struct scene *, int line, const char *path,
 	    const struct int_list *);
