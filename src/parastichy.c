@@ -28,91 +28,145 @@
 #define RUNS	48	/* runs the structure is cut into for the zones */
 #define SAMPLE	2048	/* organs measured in a run at most */
 
-struct kd {
-	const struct organ *o;
-	size_t		*ix;	/* organ indices, in tree order */
-	unsigned char	*axis;	/* at a node's middle: the axis it splits */
+/*
+ * The organs' positions are copied into one array, so that a search
+ * reads them in order and not through 120-byte organs, and the tree
+ * is built over it: a node splits its range [lo, hi) at m on one axis,
+ * every point before m at or below its split value and every point
+ * from m on at or above; a range of LEAF points or fewer is a leaf,
+ * read through.
+ */
+struct kpt {
+	double		 p[3];
+	size_t		 i;	/* the organ */
 };
 
-static double
-coord(const struct kd *T, size_t k, int axis)
+struct knode {
+	double		 split;
+	size_t		 m;	/* 0: a leaf */
+	size_t		 right;	/* the node of [m, hi); [lo, m)'s is next */
+	int		 axis;
+};
+
+struct kd {
+	struct kpt	*pt;
+	size_t		 n;
+	struct knode	*node;
+	size_t		 nnode, cap;
+};
+
+#define LEAF	16
+
+static void
+kpt_swap(struct kpt *a, struct kpt *b)
 {
-	return T->o[T->ix[k]].pos[axis];
+	struct kpt t = *a;
+
+	*a = *b;
+	*b = t;
 }
 
-/* Quickselect: the median of ix[lo..hi) on axis goes to mid. */
-static void
-select_median(struct kd *T, size_t lo, size_t hi, size_t mid, int axis)
+static int
+dblcmp(const void *a, const void *b)
 {
-	while (hi - lo > 1) {
-		double pivot = coord(T, lo + (hi - lo) / 2, axis);
-		size_t i = lo, j = hi - 1;
+	double x = *(const double *)a, y = *(const double *)b;
 
-		while (i <= j) {
-			while (coord(T, i, axis) < pivot)
-				i++;
-			while (coord(T, j, axis) > pivot)
-				j--;
-			if (i <= j) {
-				size_t t = T->ix[i];
-
-				T->ix[i] = T->ix[j];
-				T->ix[j] = t;
-				i++;
-				if (j == 0)
-					break;
-				j--;
-			}
-		}
-		if (mid <= j)
-			hi = j + 1;
-		else if (mid >= i)
-			lo = i;
-		else
-			return;
-	}
+	return x < y ? -1 : x > y;
 }
 
 /*
- * Build over ix[lo..hi): the median on the axis of widest spread at its
- * middle (a flat head has no spread in z: splitting there would make
- * every search look on both sides).
+ * Split pt[lo..hi) on axis about the median of nine points spread over
+ * it, in one pass (Hoare's: points equal to it go to either side, so
+ * a range of equal values still halves); where the halves start.  A
+ * sample's median, not the exact one: a quickselect's passes made the
+ * build cost more than all the searches, and a split a little off the
+ * middle costs a search a little depth.
  */
-static void
-build(struct kd *T, size_t lo, size_t hi)
+static size_t
+split(struct kpt *pt, size_t lo, size_t hi, int axis, double *value)
 {
-	size_t mid = lo + (hi - lo) / 2;
-	double mn[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-	double mx[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-	int axis = 0;
+	double s[9], v;
+	size_t i = lo, j = hi - 1;
 
-	if (hi - lo <= 1) {
-		if (hi > lo)
-			T->axis[lo] = 0;
-		return;
+	for (int k = 0; k < 9; k++)
+		s[k] = pt[lo + (hi - lo - 1) * (size_t)k / 8].p[axis];
+	qsort(s, 9, sizeof(*s), dblcmp);
+	v = *value = s[4];
+	for (;;) {
+		while (pt[i].p[axis] < v)
+			i++;
+		while (pt[j].p[axis] > v)
+			j--;
+		if (i >= j)
+			break;
+		kpt_swap(&pt[i], &pt[j]);
+		i++;
+		j--;
 	}
-	for (size_t k = lo; k < hi; k++)
-		for (int a = 0; a < 3; a++) {
-			double v = coord(T, k, a);
-
-			mn[a] = v < mn[a] ? v : mn[a];
-			mx[a] = v > mx[a] ? v : mx[a];
-		}
-	for (int a = 1; a < 3; a++)
-		if (mx[a] - mn[a] > mx[axis] - mn[axis])
-			axis = a;
-	T->axis[mid] = (unsigned char)axis;
-	select_median(T, lo, hi, mid, axis);
-	build(T, lo, mid);
-	build(T, mid + 1, hi);
+	/* pt[lo..i) <= v <= pt[j + 1..hi), and j < i. */
+	return j + 1;
 }
 
-/* The K nearest, kept sorted by distance. */
+/*
+ * Build over pt[lo..hi), inside the box bmin..bmax: split on the box's
+ * widest axis (a flat head has no spread in z: splitting there would
+ * make every search look on both sides).  The halves' boxes are this
+ * one cut at the split, not measured again.
+ */
+static void
+build(struct kd *T, size_t lo, size_t hi, const double bmin[3],
+    const double bmax[3])
+{
+	size_t at = T->nnode++, m = 0;
+	double cut[3], v = 0;
+	int axis = 0;
+
+	if (T->nnode > T->cap) {
+		T->cap = 2 * T->cap + 64;
+		T->node = xreallocarray(T->node, T->cap, sizeof(*T->node));
+	}
+	for (int a = 1; a < 3; a++)
+		if (bmax[a] - bmin[a] > bmax[axis] - bmin[axis])
+			axis = a;
+	if (hi - lo > LEAF) {
+		m = split(T->pt, lo, hi, axis, &v);
+		/*
+		 * Both halves hold points: the scan from lo stops at or
+		 * before the last of the nine (which is at hi - 1), and m
+		 * = hi would need v at hi - 1 alone, the most of five of
+		 * the nine.  Were it not so, a leaf, not a loop.
+		 */
+		if (m <= lo || m >= hi)
+			m = 0;
+	}
+	T->node[at] = (struct knode){ v, m, 0, axis };
+	if (m == 0)
+		return;
+	memcpy(cut, bmax, sizeof(cut));
+	cut[axis] = v;
+	build(T, lo, m, bmin, cut);
+	T->node[at].right = T->nnode;
+	memcpy(cut, bmin, sizeof(cut));
+	cut[axis] = v;
+	build(T, m, hi, cut, bmax);
+}
+
+/* The K nearest, kept sorted by distance, then by index. */
 struct near {
 	size_t	 j[K];
 	double	 d2[K];
 	int	 n;
 };
+
+/*
+ * Equal distances (a lattice on a cylinder has them) go by index, so
+ * the neighbours found do not hang on the order the tree is read in.
+ */
+static inline int
+nearer(double d2, size_t j, double e2, size_t k)
+{
+	return d2 < e2 || (d2 == e2 && j < k);
+}
 
 static void
 near_add(struct near *nb, size_t j, double d2)
@@ -120,12 +174,12 @@ near_add(struct near *nb, size_t j, double d2)
 	int k;
 
 	if (nb->n == K) {
-		if (d2 >= nb->d2[K - 1])
+		if (!nearer(d2, j, nb->d2[K - 1], nb->j[K - 1]))
 			return;
 		k = K - 1;
 	} else
 		k = nb->n++;
-	while (k > 0 && nb->d2[k - 1] > d2) {
+	while (k > 0 && nearer(d2, j, nb->d2[k - 1], nb->j[k - 1])) {
 		nb->d2[k] = nb->d2[k - 1];
 		nb->j[k] = nb->j[k - 1];
 		k--;
@@ -134,53 +188,67 @@ near_add(struct near *nb, size_t j, double d2)
 	nb->j[k] = j;
 }
 
+/* Point pt's distance to p, added to nb if it may be one. */
+static inline void
+consider(const struct kpt *pt, const double p[3], size_t self, int earlier,
+    struct near *nb)
+{
+	double dx = pt->p[0] - p[0], dy = pt->p[1] - p[1];
+	double dz = pt->p[2] - p[2];
+
+	if (earlier ? pt->i < self : pt->i != self)
+		near_add(nb, pt->i, dx * dx + dy * dy + dz * dz);
+}
+
 /* The K nearest to p but self, or of those before self if earlier. */
 static void
-query(const struct kd *T, size_t lo, size_t hi, const double p[3],
+query(const struct kd *T, size_t at, size_t lo, size_t hi, const double p[3],
     size_t self, int earlier, struct near *nb)
 {
-	size_t mid;
-	const double *q;
-	double d2 = 0, diff;
-	int axis;
+	const struct knode *nd = &T->node[at];
+	double diff;
 
-	if (hi <= lo)
+	if (nd->m == 0) {
+		for (size_t k = lo; k < hi; k++)
+			consider(&T->pt[k], p, self, earlier, nb);
 		return;
-	mid = lo + (hi - lo) / 2;
-	axis = T->axis[mid];
-	q = T->o[T->ix[mid]].pos;
-	for (int a = 0; a < 3; a++)
-		d2 += (q[a] - p[a]) * (q[a] - p[a]);
-	if (earlier ? T->ix[mid] < self : T->ix[mid] != self)
-		near_add(nb, T->ix[mid], d2);
-	diff = p[axis] - q[axis];
+	}
+	diff = p[nd->axis] - nd->split;
 	if (diff < 0) {
-		query(T, lo, mid, p, self, earlier, nb);
-		if (nb->n < K || diff * diff < nb->d2[nb->n - 1])
-			query(T, mid + 1, hi, p, self, earlier, nb);
+		query(T, at + 1, lo, nd->m, p, self, earlier, nb);
+		if (nb->n < K || diff * diff <= nb->d2[nb->n - 1])
+			query(T, nd->right, nd->m, hi, p, self, earlier, nb);
 	} else {
-		query(T, mid + 1, hi, p, self, earlier, nb);
-		if (nb->n < K || diff * diff < nb->d2[nb->n - 1])
-			query(T, lo, mid, p, self, earlier, nb);
+		query(T, nd->right, nd->m, hi, p, self, earlier, nb);
+		if (nb->n < K || diff * diff <= nb->d2[nb->n - 1])
+			query(T, at + 1, lo, nd->m, p, self, earlier, nb);
 	}
 }
 
 static void
 kd_init(struct kd *T, const struct result *r)
 {
-	T->o = r->organs;
-	T->ix = xcalloc(r->count, sizeof(size_t));
-	T->axis = xcalloc(r->count, 1);
-	for (size_t i = 0; i < r->count; i++)
-		T->ix[i] = i;
-	build(T, 0, r->count);
+	double bmin[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+	double bmax[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+
+	*T = (struct kd){ .n = r->count };
+	T->pt = xcalloc(r->count ? r->count : 1, sizeof(*T->pt));
+	for (size_t i = 0; i < r->count; i++) {
+		memcpy(T->pt[i].p, r->organs[i].pos, sizeof(T->pt[i].p));
+		T->pt[i].i = i;
+		for (int a = 0; a < 3; a++) {
+			bmin[a] = fmin(bmin[a], T->pt[i].p[a]);
+			bmax[a] = fmax(bmax[a], T->pt[i].p[a]);
+		}
+	}
+	build(T, 0, r->count, bmin, bmax);
 }
 
 static void
 kd_free(struct kd *T)
 {
-	free(T->ix);
-	free(T->axis);
+	free(T->pt);
+	free(T->node);
 }
 
 /* The nearest earlier neighbour of i in nb on each side, or -1. */
@@ -223,7 +291,7 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 	/* On the axis no organ turns either way. */
 	if (hypot(o->pos[0], o->pos[1]) < 1e-9 * (o->radius + 1e-300))
 		return;
-	query(T, 0, r->count, o->pos, i, 0, &nb);
+	query(T, 0, 0, T->n, o->pos, i, 0, &nb);
 	/*
 	 * Earlier neighbours only: a parastichy through i has a neighbour
 	 * on either side of it, i - m one way and i + m the other, so only
@@ -238,7 +306,7 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 		 * one: then the earlier ones alone, a slower search.
 		 */
 		nb.n = 0;
-		query(T, 0, r->count, o->pos, i, 1, &nb);
+		query(T, 0, 0, T->n, o->pos, i, 1, &nb);
 		sides(r, i, &nb, side);
 	}
 	if (side[0] < 0 || side[1] < 0)
@@ -261,10 +329,10 @@ para_nearest(const struct result *r, double *d)
 
 	kd_init(&T, r);
 	for (size_t t = 0; t < r->count; t++) {
-		size_t i = T.ix[t];
+		size_t i = T.pt[t].i;
 		struct near nb = { .n = 0 };
 
-		query(&T, 0, r->count, r->organs[i].pos, i, 0, &nb);
+		query(&T, 0, 0, T.n, T.pt[t].p, i, 0, &nb);
 		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) : HUGE_VAL;
 	}
 	kd_free(&T);
@@ -278,7 +346,7 @@ para_pairs(const struct result *r, int (*pair)[2])
 	kd_init(&T, r);
 	/* In tree order: neighbours in space are then neighbours in memory. */
 	for (size_t t = 0; t < r->count; t++)
-		pair_at(&T, r, T.ix[t], pair[T.ix[t]]);
+		pair_at(&T, r, T.pt[t].i, pair[T.pt[t].i]);
 	kd_free(&T);
 }
 
