@@ -206,10 +206,23 @@ far_init(struct field *F)
 	for (int it = 0; it < 60; it++) {
 		double x = (lo + hi) / 2, t = 1, tail = 0, s = 2 * lam;
 
+		/*
+		 * The terms' ratio (s + j - 1) x / j tends to x, from above
+		 * (s > 1) or below, so the rest of the tail is at most t r
+		 * / (1 - r), r the larger of the two: once that is under
+		 * 1e-17 of the tail the sum stops, rather than summing some
+		 * thousands of terms to underflow 60 times over (6 ms, a
+		 * fifth of a run of 2,000 at G = 0.3).
+		 */
 		for (int j = 1; j < MODES + 4000 && t > 0; j++) {
-			t *= (s + j - 1) / j * x;
-			if (j > MODES)
+			double ratio = (s + j - 1) / j * x, r = fmax(ratio, x);
+
+			t *= ratio;
+			if (j > MODES) {
 				tail += t;
+				if (r < 1 && t * r < 1e-17 * (1 - r) * tail)
+					break;
+			}
 		}
 		if (tail <= FAR_TAIL * pow(1 - x, -s))
 			lo = x;
