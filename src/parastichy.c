@@ -188,41 +188,83 @@ near_add(struct near *nb, size_t j, double d2)
 	nb->j[k] = j;
 }
 
-/* Point pt's distance to p, added to nb if it may be one. */
-static inline void
-consider(const struct kpt *pt, const double p[3], size_t self, int earlier,
-    struct near *nb)
+/*
+ * A search from p: the K nearest but organ self, or of those before
+ * self if earlier; distances in units of scale, a power of two near
+ * p's size, so that their squares neither overflow nor underflow where
+ * the organs span e^700 (the inhibition model's grown radii): unscaled,
+ * every square past 1e154 was infinite, every side of every node then
+ * as near as the K-th, and the search read the whole tree.
+ */
+struct look {
+	double		 p[3];
+	double		 inv;		/* 1 / scale, exact */
+	size_t		 self;
+	int		 earlier;
+};
+
+static void
+look_init(struct look *lk, const double p[3], size_t self, int earlier)
 {
-	double dx = pt->p[0] - p[0], dy = pt->p[1] - p[1];
-	double dz = pt->p[2] - p[2];
+	double m = fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2])));
+	int e = 0;
+
+	if (m > 0 && isfinite(m))
+		frexp(m, &e);
+	memcpy(lk->p, p, sizeof(lk->p));
+	lk->inv = ldexp(1, -e);
+	lk->self = self;
+	lk->earlier = earlier;
+}
+
+/* Point pt's distance to the look's, added to nb if it may be one. */
+static inline void
+consider(const struct kpt *pt, const struct look *lk, struct near *nb)
+{
+	double dx = (pt->p[0] - lk->p[0]) * lk->inv;
+	double dy = (pt->p[1] - lk->p[1]) * lk->inv;
+	double dz = (pt->p[2] - lk->p[2]) * lk->inv;
+	size_t self = lk->self;
+	int earlier = lk->earlier;
 
 	if (earlier ? pt->i < self : pt->i != self)
 		near_add(nb, pt->i, dx * dx + dy * dy + dz * dz);
 }
 
-/* The K nearest to p but self, or of those before self if earlier. */
+/* The look's K nearest in the subtree at node at, over [lo, hi). */
 static void
-query(const struct kd *T, size_t at, size_t lo, size_t hi, const double p[3],
-    size_t self, int earlier, struct near *nb)
+query(const struct kd *T, size_t at, size_t lo, size_t hi,
+    const struct look *lk, struct near *nb)
 {
 	const struct knode *nd = &T->node[at];
 	double diff;
 
 	if (nd->m == 0) {
 		for (size_t k = lo; k < hi; k++)
-			consider(&T->pt[k], p, self, earlier, nb);
+			consider(&T->pt[k], lk, nb);
 		return;
 	}
-	diff = p[nd->axis] - nd->split;
+	diff = (lk->p[nd->axis] - nd->split) * lk->inv;
 	if (diff < 0) {
-		query(T, at + 1, lo, nd->m, p, self, earlier, nb);
+		query(T, at + 1, lo, nd->m, lk, nb);
 		if (nb->n < K || diff * diff <= nb->d2[nb->n - 1])
-			query(T, nd->right, nd->m, hi, p, self, earlier, nb);
+			query(T, nd->right, nd->m, hi, lk, nb);
 	} else {
-		query(T, nd->right, nd->m, hi, p, self, earlier, nb);
+		query(T, nd->right, nd->m, hi, lk, nb);
 		if (nb->n < K || diff * diff <= nb->d2[nb->n - 1])
-			query(T, at + 1, lo, nd->m, p, self, earlier, nb);
+			query(T, at + 1, lo, nd->m, lk, nb);
 	}
+}
+
+/* The K nearest to p but self, or of those before self if earlier. */
+static void
+nearest(const struct kd *T, const double p[3], size_t self, int earlier,
+    struct near *nb)
+{
+	struct look lk;
+
+	look_init(&lk, p, self, earlier);
+	query(T, 0, 0, T->n, &lk, nb);
 }
 
 static void
@@ -291,7 +333,7 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 	/* On the axis no organ turns either way. */
 	if (hypot(o->pos[0], o->pos[1]) < 1e-9 * (o->radius + 1e-300))
 		return;
-	query(T, 0, 0, T->n, o->pos, i, 0, &nb);
+	nearest(T, o->pos, i, 0, &nb);
 	/*
 	 * Earlier neighbours only: a parastichy through i has a neighbour
 	 * on either side of it, i - m one way and i + m the other, so only
@@ -306,7 +348,7 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 		 * one: then the earlier ones alone, a slower search.
 		 */
 		nb.n = 0;
-		query(T, 0, 0, T->n, o->pos, i, 1, &nb);
+		nearest(T, o->pos, i, 1, &nb);
 		sides(r, i, &nb, side);
 	}
 	if (side[0] < 0 || side[1] < 0)
@@ -331,9 +373,12 @@ para_nearest(const struct result *r, double *d)
 	for (size_t t = 0; t < r->count; t++) {
 		size_t i = T.pt[t].i;
 		struct near nb = { .n = 0 };
+		struct look lk;
 
-		query(&T, 0, 0, T.n, T.pt[t].p, i, 0, &nb);
-		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) : HUGE_VAL;
+		look_init(&lk, T.pt[t].p, i, 0);
+		query(&T, 0, 0, T.n, &lk, &nb);
+		/* In the look's units: scaled back, exactly. */
+		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) / lk.inv : HUGE_VAL;
 	}
 	kd_free(&T);
 }

@@ -6,7 +6,9 @@
  *  - van Iterson's pairs (ABOP Table 4.1's (m, n)) come back from the
  *    cylindrical model's output;
  *  - on a collision structure, the zones along it equal those from a
- *    brute-force search of every earlier organ.
+ *    brute-force search of every earlier organ;
+ *  - each organ's nearest neighbour, from the k-d tree, is the one a
+ *    brute-force search finds, where the organs span e^500.
  * Prints "ok"/"not ok" lines.
  */
 #include <math.h>
@@ -279,6 +281,52 @@ gcd(int a, int b)
  * (42/67 and 42/69 in turn): not one pair, so reported as a transition
  * naming what it saw, never as a pair.
  */
+/*
+ * Grown radii from 1 to e^500: the squares of the outer organs'
+ * distances pass a double's range, which made every one infinite (each
+ * organ then sized 1, and the search read the whole tree each time).
+ * Each organ's size is half its nearest distance: against a brute
+ * force in long double, whose range holds e^1000.
+ */
+static void
+nearest_wide(void)
+{
+	struct scene sc;
+	struct result res;
+	size_t bad = 0, checked = 0;
+
+	if (run("model = \"inhibition\"; count = 10000; inhibition = { "
+	    "growth = 0.05; radii = \"grown\"; };", &sc, &res) != 0) {
+		check(0, "wide radii: runs");
+		scene_free(&sc);
+		return;
+	}
+	for (size_t i = 0; i < res.count; i += 97, checked++) {
+		long double best = HUGE_VALL;
+
+		for (size_t j = 0; j < res.count; j++) {
+			long double d = 0;
+
+			for (int a = 0; a < 3 && j != i; a++) {
+				long double x = (long double)res.organs[j].pos[a] -
+				    res.organs[i].pos[a];
+
+				d += x * x;
+			}
+			if (j != i && d < best)
+				best = d;
+		}
+		if (!(fabsl(sqrtl(best) / 2 - res.organs[i].radius) <=
+		    1e-12L * sqrtl(best)))
+			bad++;
+	}
+	check(bad == 0 && checked > 100, "wide radii (1 to e^500): %zu organs' "
+	    "sizes are half the nearest distance a brute force finds (%zu "
+	    "not)", checked, bad);
+	result_free(&res);
+	scene_free(&sc);
+}
+
 static void
 bijugate(void)
 {
@@ -377,6 +425,7 @@ int
 main(void)
 {
 	check_topic = "parastichies: ";
+	nearest_wide();
 	bijugate();
 	distichous();
 	inhibition_pairs();
