@@ -1,7 +1,9 @@
 /*
  * bench_inhibition.c - the inhibition model's speed (make bench): 100,000
- * primordia with the far field, and side by side with the plain all-pairs
- * sum at 5,000, one core.
+ * primordia with the far field, side by side with the plain all-pairs
+ * sum at 5,000, and the cost a primordium from G = 0.5 down to 0.0005,
+ * each G's angles checked against a dense scan of the whole energy;
+ * one core.
  */
 #include <stdio.h>
 #include <string.h>
@@ -10,10 +12,11 @@
 #include "model.h"
 #include "scene.h"
 #include "clock.h"
+#include "dense.h"
 
 /* Seconds to place count primordia at growth G; -1 on error. */
 static double
-run(long count, double G, int all_pairs, double *settled)
+run(long count, double G, int all_pairs, double *settled, int dense)
 {
 	char text[256];
 	struct scene sc;
@@ -21,7 +24,7 @@ run(long count, double G, int all_pairs, double *settled)
 	double t0, t;
 
 	snprintf(text, sizeof(text), "model = \"inhibition\";\ncount = %ld;\n"
-	    "inhibition = { growth = %.9g; };\n", count, G);
+	    "inhibition = { growth = %.9g; radii = \"grown\"; };\n", count, G);
 	if (scene_load_buffer(&sc, "bench.cfg", text, strlen(text)) != 0)
 		return -1;
 	t0 = now();
@@ -31,6 +34,15 @@ run(long count, double G, int all_pairs, double *settled)
 	}
 	t = now() - t0;
 	*settled = res.divergence;
+	if (dense) {
+		/* The first 1,500, every 100th: the scan is O(n) a point. */
+		int checked;
+		double worst = dense_worst(&res, 3, 0, 100, 1500, &checked);
+
+		printf("  dense scan: %d angles, worst %.2g rad from the true "
+		    "minimum (%s)\n", checked, worst, worst < 1e-9 ? "ok" :
+		    "WRONG");
+	}
 	result_free(&res);
 	scene_free(&sc);
 	return t;
@@ -40,20 +52,20 @@ run(long count, double G, int all_pairs, double *settled)
 static const struct {
 	long		 count;
 	double		 G;
-} sweep[] = { { 2000, 0.3 }, { 6000, 0.1 }, { 30000, 0.02 },
-    { 20000, 0.002 }, { 5000, 0.001 } };
+} sweep[] = { { 1000, 0.5 }, { 2000, 0.3 }, { 6000, 0.1 }, { 30000, 0.02 },
+    { 50000, 0.005 }, { 20000, 0.002 }, { 5000, 0.001 }, { 3000, 0.0005 } };
 
 int
 main(void)
 {
 	double s1, s2, s3, t1, t2, t3;
 
-	t1 = run(100000, 0.005, 0, &s1);
+	t1 = run(100000, 0.005, 0, &s1, 0);
 	printf("power law, G = 0.005, 100000 primordia with the far field: "
 	    "%.2f s = %.1f us each (settled at %.4f degrees)\n", t1,
 	    t1 / 100000 * 1e6, s1);
-	t2 = run(5000, 0.005, 0, &s2);
-	t3 = run(5000, 0.005, 1, &s3);
+	t2 = run(5000, 0.005, 0, &s2, 0);
+	t3 = run(5000, 0.005, 1, &s3, 0);
 	printf("side by side, 5000 primordia: far field %.3f s, all pairs %.3f "
 	    "s: %.1fx (settled %.6f and %.6f)\n", t2, t3, t3 / t2, s2, s3);
 	/*
@@ -61,13 +73,18 @@ main(void)
 	 * primordia are near and the more gaps the circle has.
 	 */
 	for (size_t i = 0; i < sizeof(sweep) / sizeof(sweep[0]); i++) {
-		double s, t = run(sweep[i].count, sweep[i].G, 0, &s);
+		double s, t;
 
+		printf("G = %g, %ld primordia: ", sweep[i].G, sweep[i].count);
+		fflush(stdout);
+		t = run(sweep[i].count, sweep[i].G, 0, &s, 0);
 		if (t < 0)
 			return 1;
-		printf("G = %g, %ld primordia: %.1f us each (settled at %.4f "
-		    "degrees)\n", sweep[i].G, sweep[i].count, t /
+		printf("%.1f us each (settled at %.4f degrees)\n", t /
 		    (double)sweep[i].count * 1e6, s);
+		if (run(sweep[i].count < 1500 ? sweep[i].count : 1500, sweep[i].G, 0,
+		    &s, 1) < 0)
+			return 1;
 	}
 	return t1 < 0 || t2 < 0 || t3 < 0;
 }

@@ -19,6 +19,7 @@
 #include "parastichy.h"
 #include "scene.h"
 #include "check.h"
+#include "dense.h"
 
 /* Load an inhibition scene from its settings. */
 static int
@@ -39,135 +40,25 @@ run(const char *cfg, struct scene *sc, struct result *res)
 	return model_run(sc, res);
 }
 
-/* Each organ's distance from the axis in the output. */
-static const double *rho;
-
-/*
- * The whole energy on the edge when organ n was born.  Organ i was then
- * rho_i / rho_n meristem radii out: all have grown by the same factor
- * since, whatever the growth was.
- */
-static double
-energy(const double *phi, int n, double G, double s, int gauss, double th)
-{
-	double e = 0;
-
-	(void)G;
-	for (int i = 0; i < n; i++) {
-		if (gauss) {
-			double x = remainder(th - phi[i], 2 * M_PI);
-
-			for (int k = -1; k <= 1; k++)
-				e += exp(-(x + 2 * M_PI * k) * (x + 2 * M_PI * k)) /
-				    (n - i);
-		} else {
-			double r = rho[i] / rho[n];
-			double d2 = 1 + r * r - 2 * r * cos(th - phi[i]);
-
-			e += pow(d2, -s / 2);
-		}
-	}
-	return e;
-}
-
-/* E' at th, for the refinement by the sign of the slope. */
-static double
-slope(const double *phi, int n, double s, int gauss, double th)
-{
-	double e = 0;
-
-	for (int i = 0; i < n; i++) {
-		if (gauss) {
-			double x = remainder(th - phi[i], 2 * M_PI);
-
-			for (int k = -1; k <= 1; k++) {
-				double y = x + 2 * M_PI * k;
-
-				e += -2 * y * exp(-y * y) / (n - i);
-			}
-		} else {
-			double r = rho[i] / rho[n];
-			double d2 = 1 + r * r - 2 * r * cos(th - phi[i]);
-
-			e += -s / 2 * pow(d2, -s / 2 - 1) * 2 * r * sin(th - phi[i]);
-		}
-	}
-	return e;
-}
-
-/*
- * The true minimum: a dense scan, then bisection on the sign of E'
- * around the best sample (values alone could not resolve the flat
- * bottom better than the square root of the rounding).
- */
-static double
-true_min(const double *phi, int n, double G, double s, int gauss)
-{
-	int M = 6000, best = 0;
-	double h = 2 * M_PI / M, bestE = HUGE_VAL, a, b;
-
-	for (int k = 0; k < M; k++) {
-		double e = energy(phi, n, G, s, gauss, k * h);
-
-		if (e < bestE) {
-			bestE = e;
-			best = k;
-		}
-	}
-	a = (best - 1) * h;
-	b = (best + 1) * h;
-	(void)G;
-	for (int it = 0; it < 60 && b - a > 1e-14; it++) {
-		double m = (a + b) / 2;
-
-		if (slope(phi, n, s, gauss, m) > 0)
-			b = m;
-		else
-			a = m;
-	}
-	return (a + b) / 2;
-}
-
 static void
 minima(const char *what, const char *cfg, double G, double s, int gauss,
     int every)
 {
 	struct scene sc;
 	struct result res;
-	double *phi, *rh, worst = 0;
-	int N, checked = 0;
+	double worst;
+	int checked;
 
+	(void)G;
 	if (run(cfg, &sc, &res) != 0) {
 		check(0, "%s: runs", what);
 		scene_free(&sc);
 		return;
 	}
-	N = (int)res.count;
-	phi = calloc((size_t)N, sizeof(*phi));
-	rh = calloc((size_t)N, sizeof(*rh));
-	for (int i = 0; i < N; i++) {
-		phi[i] = atan2(res.organs[i].pos[1], res.organs[i].pos[0]);
-		rh[i] = hypot(res.organs[i].pos[0], res.organs[i].pos[1]);
-	}
-	rho = rh;
-	for (int n = 2; n < N; n += every) {
-		double t = true_min(phi, n, G, s, gauss);
-		double d = fabs(remainder(t - phi[n], 2 * M_PI));
-
-		/* Equal minima (a mirror-symmetric field) are both right. */
-		if (d > 1e-9 && fabs(energy(phi, n, G, s, gauss, t) -
-		    energy(phi, n, G, s, gauss, phi[n])) <= 1e-9 *
-		    energy(phi, n, G, s, gauss, t))
-			d = 0;
-		if (d > worst)
-			worst = d;
-		checked++;
-	}
+	worst = dense_worst(&res, s, gauss, every, (int)res.count, &checked);
 	check(worst < 1e-9, "%s: %d primordia's angles are the energy's true "
 	    "minimum by a dense scan of the whole sum (worst %.2g rad)", what,
 	    checked, worst);
-	free(phi);
-	free(rh);
 	result_free(&res);
 	scene_free(&sc);
 }
