@@ -29,24 +29,112 @@ echo "== expressions"
 echo "== number formatting"
 "$TESTBIN/bench_numfmt"
 
-echo "== planar emission, $N organs, one core"
-model=$(best "$PHYLLO" --info "$OUT/planar.cfg")
+# The code before issue 38's work, built here with today's bench
+# programs, so that each figure below is printed beside the old code's
+# in the same run (BENCH_BASE=<commit> for another; none outside git).
+BASE=${BENCH_BASE:-3ac030d}
+OLD=
+if [ "$BASE" != none ] && git rev-parse -q --verify "$BASE^{commit}" >/dev/null 2>&1; then
+	OLD=$OUT/old
+	rm -rf "$OLD" && mkdir -p "$OLD" &&
+		git archive "$BASE" | tar -x -C "$OLD" &&
+		cp tests/bench_*.c tests/clock.h tests/dense.h "$OLD/tests/" &&
+		(cd "$OLD" && ./configure >/dev/null 2>&1 &&
+		make -s TESTS="bench_phases bench_inhibition bench_matrix" \
+		phyllo-export build/bench_phases build/bench_inhibition \
+		build/bench_matrix >/dev/null 2>&1) || OLD=
+	[ -n "$OLD" ] && echo "old code: $BASE ($(git log -1 --format=%s "$BASE" | cut -c1-60)...)" ||
+		echo "old code: $BASE did not build; figures for today's code only"
+fi
+
+# side NEW OLD: two bench outputs, line by line, today's then the old.
+side() {
+	if [ -n "$OLD" ]; then
+		paste -d '\n' "$1" "$2" | awk '{ printf "%s %s\n", NR % 2 ? "now:" : "old:", $0 }'
+	else
+		cat "$1"
+	fi
+}
+
+echo "== a run's three costs, each timed on its own (model, parastichy analysis, CSV writing), one core"
+phases() {
+	"$TESTBIN/bench_phases" "$@" >"$OUT/phases.new" || exit 1
+	[ -z "$OLD" ] || "$OLD/build/bench_phases" "$@" >"$OUT/phases.old" || exit 1
+	side "$OUT/phases.new" "$OUT/phases.old"
+}
+echo "planar, $N organs (the analysis' target: 0.25 s):"
+phases "model = \"planar\"; count = $N; planar = { scale = 0.01; dome = 0.2; };" pairs
+echo "area model on a hemisphere, $N organs:"
+phases "model = \"area\"; count = $N; area = { receptacle = { shape = \"hemisphere\"; }; };"
+echo "collision model on the dome, r = 0.0012 (about $N organs):"
+phases "model = \"collision\"; count = 2000000; collision = { receptacle = { shape = \"hemisphere\"; }; radius = 0.0012; };"
+echo "inhibition model, 100,000 at G = 0.005, grown radii (from 1 to e^500):"
+phases "model = \"inhibition\"; count = 100000; inhibition = { growth = 0.005; radii = \"grown\"; };"
+
+echo "== planar emission through the program, $N organs, one core"
+info=$(best "$PHYLLO" --info "$OUT/planar.cfg")
 csv=$(best "$PHYLLO" --csv -o /dev/null "$OUT/planar.cfg")
 bytes=$("$PHYLLO" --csv "$OUT/planar.cfg" | wc -c)
-echo "$model $csv $bytes $N" | awk '{
-	printf "model only (--info):  %.3f s\n", $1
-	printf "model + CSV (--csv):  %.3f s  = %.2f M organs/s, %.0f MB/s (%d bytes)\n", $2, $4 / $2 / 1e6, $3 / $2 / 1e6, $3
-	printf "CSV writing share:    %.0f%%\n", 100 * ($2 - $1) / $2
+echo "$info $csv $bytes $N" | awk '{
+	printf "--info (model and analysis):  %.3f s\n", $1
+	printf "--csv (model and CSV):        %.3f s  = %.2f M organs/s, %.0f MB/s (%d bytes)\n", $2, $4 / $2 / 1e6, $3 / $2 / 1e6, $3
 }'
+
+echo "== the count limit, one core: time and peak memory of a run of each model at its largest"
+# 10,000,000 organs (the count limit), 5,000,000 for the collision
+# model (its own limit); the inhibition model's limit is its growth
+# summed, under 700: at G = 0.005 some 137,000 primordia.
+if [ -x /usr/bin/time ]; then
+	printf 'model = "planar";\ncount = 10000000;\n' >"$OUT/max-planar.cfg"
+	printf 'model = "cylindrical";\ncount = 10000000;\ncylindrical = { parastichies = [34, 55]; };\n' >"$OUT/max-cylindrical.cfg"
+	printf 'model = "area";\ncount = 10000000;\narea = { receptacle = { shape = "hemisphere"; }; };\n' >"$OUT/max-area.cfg"
+	printf 'model = "collision";\ncount = 5000000;\ncollision = { receptacle = { shape = "hemisphere"; }; radius = 0.00053; };\n' >"$OUT/max-collision.cfg"
+	printf 'model = "inhibition";\ncount = 137000;\ninhibition = { growth = 0.005; };\n' >"$OUT/max-inhibition.cfg"
+	for m in planar cylindrical area collision inhibition; do
+		for how in --csv --info; do
+			/usr/bin/time -f "%e %M" -o "$OUT/max.time" "$PHYLLO" $how -o "$OUT/max.out" "$OUT/max-$m.cfg" 2>"$OUT/max.err" ||
+				{ echo "$m $how: failed: $(head -1 "$OUT/max.err")"; continue; }
+			n=$("$PHYLLO" --info "$OUT/max-$m.cfg" 2>/dev/null | sed -n 's/^count: //p')
+			[ "$how" = --csv ] && b=$(wc -c <"$OUT/max.out") || b=0
+			echo "$m $how $n $(tail -1 "$OUT/max.time") $b"
+		done
+	done | awk '$3 == "failed:" { print; next } { printf "%-12s %-7s %9d organs: %6.2f s, peak %6.0f MB = %4.0f bytes an organ%s\n", $1, $2, $3, $4, $5 / 1024, $5 * 1024 / $3, $6 ? sprintf("; %.2f GB of CSV", $6 / 1e9) : "" }'
+	rm -f "$OUT/max.out"
+fi
 
 echo "== collision model: exact placement, one core"
 "$TESTBIN/bench_collision"
 
 echo "== collision model on every receptacle, fill and radius law, one core"
-"$TESTBIN/bench_matrix" 2>/dev/null
+"$TESTBIN/bench_matrix" 2>/dev/null | tee "$OUT/matrix.new"
+if [ -n "$OLD" ]; then
+	echo "-- the same with the old code, then the two side by side"
+	"$OLD/build/bench_matrix" 2>/dev/null >"$OUT/matrix.old"
+	# Each row's us a primordium, and its ratio to its own run's dome.
+	awk '
+		FNR == 1 { f++ }
+		/^[a-z]/ { head = $0; sub(/:$/, "", head) }
+		/ us each/ {
+			us = $0; sub(/ us each.*/, "", us); sub(/.*= */, "", us)
+			row = $0; sub(/^  /, "", row); sub(/  +[0-9]+ in .*/, "", row)
+			key = head " / " row
+			if (!(key in seen)) { seen[key] = 1; order[++n] = key }
+			t[f, key] = us
+			if (row ~ /^full dome/) dome[f] = us
+		}
+		END {
+			printf "%-78s %16s %16s\n", "case", "now (x dome)", "old (x dome)"
+			for (i = 1; i <= n; i++) {
+				k = order[i]
+				printf "%-78s %7.2f (%4.2fx) %7.2f (%4.2fx)\n", k, t[1, k], t[1, k] / dome[1], t[2, k], t[2, k] / dome[2]
+			}
+		}' "$OUT/matrix.new" "$OUT/matrix.old"
+fi
 
-echo "== inhibition model, one core"
-"$TESTBIN/bench_inhibition"
+echo "== inhibition model, one core (target: 20 us a primordium at every G)"
+"$TESTBIN/bench_inhibition" >"$OUT/inhib.new" || exit 1
+[ -z "$OLD" ] || "$OLD/build/bench_inhibition" >"$OUT/inhib.old" || exit 1
+side "$OUT/inhib.new" "$OUT/inhib.old"
 
 echo "== area model alone (model_run, no output), one core"
 "$TESTBIN/bench_area"
