@@ -169,6 +169,8 @@ struct field {
 	size_t		 ncp;		/* how many */
 	size_t		*gpos;		/* per gap: the first near cut after
 					   its start, in cp */
+	struct cutp	*mid;		/* the near ones that are not cuts */
+	size_t		 nmid;
 	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
 };
 
@@ -679,6 +681,26 @@ above_floor(const struct field *F, size_t i, const struct part *p)
 	return i >= F->from ? least_pull(F, i, p) - F->fl[F->n - 1 - i] : 0;
 }
 
+/*
+ * The same summed over the near ones that are not cuts, older than the
+ * k newest: from F->mid, in one tight loop, where the part is narrower
+ * than pi (a quarter of the time at the slowest growth went to reading
+ * them one by one from four arrays).
+ */
+static double
+mid_above(const struct field *F, size_t k, const struct part *p)
+{
+	double sum = 0;
+
+	if (p->hi - p->lo < M_PI)
+		for (size_t d = 0; d < F->nmid; d++)
+			sum += cut_above(F, &F->mid[d], p);
+	else
+		for (size_t i = F->from; i + k < F->n; i++)
+			sum += above_floor(F, i, p);
+	return sum;
+}
+
 #define TIERS		4
 
 /*
@@ -686,13 +708,15 @@ above_floor(const struct field *F, size_t i, const struct part *p)
  * (chosen by measurement: most gaps go at the first, most of the rest
  * at the second and third); and of those cuts, how many nearest are
  * taken part by part (0: all), the others once over the whole gap: far
- * from the gap a pull hardly changes across it.
+ * from the gap a pull hardly changes across it.  The third at 64 cuts
+ * in 8 parts, not 48 in 4, spares the last tier enough gaps at slow
+ * growth to cost 15% less at G = 0.0005 (the same angles).
  */
 static const struct {
 	size_t		 cuts;
 	int		 parts;
 	size_t		 fine;
-} tiers[TIERS] = { { 6, 1, 0 }, { 16, 4, 6 }, { 48, 4, 12 }, { 0, 16, 16 } };
+} tiers[TIERS] = { { 6, 1, 0 }, { 16, 4, 6 }, { 64, 8, 16 }, { 0, 16, 16 } };
 
 /* The last tier's parts: each tier's parts are a number dividing it. */
 #define SUBPARTS	16
@@ -752,8 +776,7 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 					coarse += cut_above(F, &F->cp[d],
 					    &whole);
 		if (tiers[tier].cuts == 0)
-			for (size_t i = F->from; i + k < F->n; i++)
-				coarse += above_floor(F, i, &whole);
+			coarse += mid_above(F, k, &whole);
 	}
 	if (F->floor + coarse + F->far_least >= stop)
 		return F->floor + coarse + F->far_least;
@@ -805,8 +828,7 @@ gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 				sum += above_floor(F, F->cpi[d], &pt);
 		/* And the near ones that are not cuts. */
 		if (tiers[tier].cuts == 0 && fine == nc)
-			for (size_t i = F->from; i + k < F->n; i++)
-				sum += above_floor(F, i, &pt);
+			sum += mid_above(F, k, &pt);
 		if (live != NULL && (!(*live & bits) || sum + far >= stop))
 			*live &= ~bits;
 		else if (sum + far < least) {
@@ -969,11 +991,15 @@ next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 	cuts_update(F, cuts, k);
 	/* Opposite each primordium its pull is least: the floor of E. */
 	F->floor = 0;
+	F->nmid = 0;
 	for (size_t i = F->from; i < F->n; i++) {
 		double *fl = &F->fl[F->n - 1 - i], r = F->r[F->n - 1 - i];
 
 		*fl = pull_at(F, (R0 + r) * (R0 + r));
 		F->floor += *fl;
+		if (i + k < F->n)
+			F->mid[F->nmid++] = (struct cutp){ F->c[i], F->s[i],
+			    R0 * R0 + r * r, 2 * R0 * r, *fl };
 	}
 	/* The near cuts, in order; the far ones' pulls are the far field's. */
 	F->ncp = 0;
@@ -1207,6 +1233,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	F.cp = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cp));
 	F.cpi = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cpi));
 	F.gpos = xcalloc(near_count(gmin) + 1, sizeof(*F.gpos));
+	F.mid = xcalloc(N, sizeof(*F.mid));
 	/*
 	 * The far field, but for the power law's reference sum of all
 	 * pairs; the Gaussian's is all of it.
@@ -1321,6 +1348,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	free(F.cp);
 	free(F.cpi);
 	free(F.gpos);
+	free(F.mid);
 	free(F.w);
 	free(F.Mc);
 	free(F.Ms);
