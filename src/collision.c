@@ -109,6 +109,7 @@ struct coll {
 	int		 check;		/* test what refine() proves */
 	long long	 refined, refine_misses;
 	double		*law;		/* the radius law sampled, or NULL */
+	double		*law_min;	/* the least of law[i ..], each i */
 	long long	 law_step;	/* every law_step primordia */
 	size_t		 nlaw;
 };
@@ -850,6 +851,16 @@ law_extent(struct coll *C, long long N, double r0, double *rmin,
 	}
 	*area = samples ? 2 * sqrt(3) * sum / (double)samples * (double)N :
 	    HUGE_VAL;
+	/*
+	 * The least radius from each sample on; a sample the law cannot
+	 * give counts as 0, which promises nothing.
+	 */
+	C->law_min = xcalloc(C->nlaw, sizeof(*C->law_min));
+	for (size_t i = C->nlaw; i-- > 0; ) {
+		r = C->law[i] == HUGE_VAL ? 0 : C->law[i];
+		C->law_min[i] = i + 1 < C->nlaw ? fmin(r, C->law_min[i + 1]) :
+		    r;
+	}
 }
 
 /*
@@ -981,6 +992,21 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 		    place_exact(&C, n, t0, a, c, s, r, &row, at);
 		if (t > C.cv.tmax)
 			break;
+		/*
+		 * Bounds under the least radius still to come cover their
+		 * cells for good.  With a rising radius that is far above
+		 * r_min, the least of all, which the map was made for, and
+		 * cover_add() went on lowering bounds that no walk to come
+		 * could tell from lower ones.  The least from the sample at
+		 * or before the next primordium on, which on a law that
+		 * only rises is no more than any radius to come.
+		 */
+		if (C.law_min != NULL && !C.nocover) {
+			size_t i = (size_t)((n + 1) / C.law_step);
+
+			if (i < C.nlaw)
+				cover_floor(&C.cover, fmin(r, C.law_min[i]));
+		}
 		coll_add(&C, t, row, a, c, s, r, brute ? NULL : at);
 		if (model_progress != NULL && n % PROGRESS_EVERY == 0)
 			model_progress(n + 1, 0);
@@ -1009,6 +1035,7 @@ out:
 	free(C.pr);
 	free(C.next);
 	free(C.law);
+	free(C.law_min);
 	free(C.slot);
 	return rc;
 }

@@ -14,8 +14,9 @@
  * 0.6 r) are mostly covered as soon as their neighbours are placed;
  * the front and true holes are not, and loose packings leave some
  * cells to refine (collision.c) or to look at exactly.  A bound under
- * most of the smallest radius covers a cell for every walk to come:
- * such a cell needs no closer look and no lowering again.
+ * most of the smallest radius still to come (cover_floor()) covers a
+ * cell for every walk to come: such a cell needs no closer look and no
+ * lowering again.
  *
  * Each column also remembers how many rows from the base are covered,
  * and the largest bound among them, so a walk jumps over all of them
@@ -185,10 +186,8 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		;
 	cv->q = a / U_STEPS;
 	cv->inv_q = U_STEPS / a;
-	/* The bounds under tight: steps 0 .. final - 1. */
-	for (cv->final = 0; cv->final < U_NONE && (cv->final + 1) * cv->q <
-	    cv->tight; cv->final++)
-		;
+	cv->final = 0;
+	cover_floor(cv, r_min);
 	cv->t_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->t_row));
 	cv->rho_c = xcalloc((size_t)cv->rows, sizeof(*cv->rho_c));
 	cv->z_c = xcalloc((size_t)cv->rows, sizeof(*cv->z_c));
@@ -304,6 +303,24 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	for (int32_t j = 0; j < cv->cols; j++)
 		column_reset(cv, j);
 	cv->lim_r = 0;		/* no walk yet */
+}
+
+void
+cover_floor(struct cover *cv, double r_floor)
+{
+	/*
+	 * The steps under TIGHT r_floor: 0 .. final - 1, never fewer.  A
+	 * final cell keeps its bound where it would have been lowered,
+	 * but both are under every radius to come, so no walk can tell.
+	 * tight, under which row_add() takes the simple bound, stays as
+	 * made for r_min: moved up with the floor, it gave some cells
+	 * bounds looser than they had (neither bound is always the
+	 * lower), walks looked there, and the exits worked out from
+	 * those looks moved placements by rounding (up to 5e-13 on the
+	 * hemisphere, radius rising, to the tip).
+	 */
+	while (cv->final < U_NONE && (cv->final + 1) * cv->q < TIGHT * r_floor)
+		cv->final++;
 }
 
 void

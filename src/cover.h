@@ -22,8 +22,9 @@ struct cover {
 	double		 tight;		/* bounds above this get a closer look;
 					   under it a cell is covered for
 					   every radius, for good */
-	uint8_t		 final;		/* steps 0 .. final - 1 are such
-					   bounds */
+	uint8_t		 final;		/* steps 0 .. final - 1 are bounds
+					   under most of every radius to
+					   come (cover_floor()) */
 	int32_t		 rows, cols;
 	double		*t_row;		/* rows + 1: t at each row's start,
 					   then the band's end */
@@ -83,6 +84,13 @@ struct except {
 void	cover_init(struct cover *, const struct curve *, double r_min,
 	    double s_band, double cells_most);
 void	cover_free(struct cover *);
+
+/*
+ * No primordium to come has a radius under r_floor (at least r_min,
+ * and never less than the last call's): bounds under about it cover a
+ * cell for good, and cover_add() need not lower them further.
+ */
+void	cover_floor(struct cover *, double r_floor);
 
 /* The column of angle phi (radians, [0, 2 pi)), in the widest rows. */
 int32_t	cover_col(const struct cover *, double phi);
