@@ -66,14 +66,6 @@ kpt_swap(struct kpt *a, struct kpt *b)
 	*b = t;
 }
 
-static int
-dblcmp(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-
-	return x < y ? -1 : x > y;
-}
-
 /*
  * Split pt[lo..hi) on axis about the median of nine points spread over
  * it, in one pass (Hoare's: points equal to it go to either side, so
@@ -88,9 +80,15 @@ split(struct kpt *pt, size_t lo, size_t hi, int axis, double *value)
 	double s[9], v;
 	size_t i = lo, j = hi - 1;
 
-	for (int k = 0; k < 9; k++)
-		s[k] = pt[lo + (hi - lo - 1) * (size_t)k / 8].p[axis];
-	qsort(s, 9, sizeof(*s), dblcmp);
+	/* Sorted as they are read in: nine, not worth qsort()'s calls. */
+	for (int k = 0; k < 9; k++) {
+		double x = pt[lo + (hi - lo - 1) * (size_t)k / 8].p[axis];
+		int at = k;
+
+		for (; at > 0 && s[at - 1] > x; at--)
+			s[at] = s[at - 1];
+		s[at] = x;
+	}
 	v = *value = s[4];
 	for (;;) {
 		while (pt[i].p[axis] < v)
@@ -231,28 +229,44 @@ consider(const struct kpt *pt, const struct look *lk, struct near *nb)
 		near_add(nb, pt->i, dx * dx + dy * dy + dz * dz);
 }
 
-/* The look's K nearest in the subtree at node at, over [lo, hi). */
+/*
+ * The look's K nearest in the subtree at node at, over [lo, hi), whose
+ * box is rd (squared, in the look's units) from the look's point: off
+ * holds, per axis, how far the point lies outside the box (Arya and
+ * Mount's incremental distance), so a far side is passed when its box,
+ * not only its splitting plane, is farther than the K-th found.
+ */
 static void
 query(const struct kd *T, size_t at, size_t lo, size_t hi,
-    const struct look *lk, struct near *nb)
+    const struct look *lk, struct near *nb, double rd, double off[3])
 {
 	const struct knode *nd = &T->node[at];
-	double diff;
+	double diff, old, far;
+	int a;
 
 	if (nd->m == 0) {
 		for (size_t k = lo; k < hi; k++)
 			consider(&T->pt[k], lk, nb);
 		return;
 	}
-	diff = (lk->p[nd->axis] - nd->split) * lk->inv;
+	a = nd->axis;
+	diff = (lk->p[a] - nd->split) * lk->inv;
+	old = off[a];
+	far = rd - old * old + diff * diff;
 	if (diff < 0) {
-		query(T, at + 1, lo, nd->m, lk, nb);
-		if (nb->n < K || diff * diff <= nb->d2[nb->n - 1])
-			query(T, nd->right, nd->m, hi, lk, nb);
+		query(T, at + 1, lo, nd->m, lk, nb, rd, off);
+		if (nb->n < K || far <= nb->d2[nb->n - 1]) {
+			off[a] = diff;
+			query(T, nd->right, nd->m, hi, lk, nb, far, off);
+			off[a] = old;
+		}
 	} else {
-		query(T, nd->right, nd->m, hi, lk, nb);
-		if (nb->n < K || diff * diff <= nb->d2[nb->n - 1])
-			query(T, at + 1, lo, nd->m, lk, nb);
+		query(T, nd->right, nd->m, hi, lk, nb, rd, off);
+		if (nb->n < K || far <= nb->d2[nb->n - 1]) {
+			off[a] = diff;
+			query(T, at + 1, lo, nd->m, lk, nb, far, off);
+			off[a] = old;
+		}
 	}
 }
 
@@ -264,7 +278,7 @@ nearest(const struct kd *T, const double p[3], size_t self, int earlier,
 	struct look lk;
 
 	look_init(&lk, p, self, earlier);
-	query(T, 0, 0, T->n, &lk, nb);
+	query(T, 0, 0, T->n, &lk, nb, 0, (double [3]){ 0, 0, 0 });
 }
 
 static void
@@ -279,8 +293,11 @@ kd_init(struct kd *T, const struct result *r)
 		memcpy(T->pt[i].p, r->organs[i].pos, sizeof(T->pt[i].p));
 		T->pt[i].i = i;
 		for (int a = 0; a < 3; a++) {
-			bmin[a] = fmin(bmin[a], T->pt[i].p[a]);
-			bmax[a] = fmax(bmax[a], T->pt[i].p[a]);
+			double v = T->pt[i].p[a];
+
+			/* Not fmin(): a call each, 6 M of them for 1 M organs. */
+			bmin[a] = v < bmin[a] ? v : bmin[a];
+			bmax[a] = v > bmax[a] ? v : bmax[a];
 		}
 	}
 	build(T, 0, r->count, bmin, bmax);
@@ -301,9 +318,14 @@ sides(const struct result *r, size_t i, const struct near *nb,
 	const double *p = r->organs[i].pos;
 	double ro = hypot(p[0], p[1]);
 
-	for (int k = 0; k < nb->n; k++) {
+	/* Only the earlier ones count, the first either way. */
+	for (int k = 0; k < nb->n && (side[0] < 0 || side[1] < 0); k++) {
 		const double *q = r->organs[nb->j[k]].pos;
-		double rq = hypot(q[0], q[1]);
+		double rq;
+
+		if (nb->j[k] >= i)
+			continue;
+		rq = hypot(q[0], q[1]);
 		/* Of unit vectors: radii may span e^700 (grown radii). */
 		double turn = (p[0] / ro) * (q[1] / rq) - (p[1] / ro) *
 		    (q[0] / rq);
@@ -316,7 +338,7 @@ sides(const struct result *r, size_t i, const struct near *nb,
 		 */
 		if (!(fabs(turn) > 1e-9))
 			continue;
-		if (nb->j[k] < i && side[s] < 0)
+		if (side[s] < 0)
 			side[s] = (long long)nb->j[k];
 	}
 }
@@ -376,7 +398,7 @@ para_nearest(const struct result *r, double *d)
 		struct look lk;
 
 		look_init(&lk, T.pt[t].p, i, 0);
-		query(&T, 0, 0, T.n, &lk, &nb);
+		query(&T, 0, 0, T.n, &lk, &nb, 0, (double [3]){ 0, 0, 0 });
 		/* In the look's units: scaled back, exactly. */
 		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) / lk.inv : HUGE_VAL;
 	}
