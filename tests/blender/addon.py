@@ -5,9 +5,13 @@
 #   blender -b --factory-startup --python addon.py -- ZIP GOOD.cfg COUNT BAD.cfg WHERE
 # where COUNT is the good scene's organ count and WHERE the FILE:LINE
 # the bad scene's error names.  Prints "check: ..." lines like check.py.
+import os
 import sys
 
 import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from install import install_addon  # noqa: E402 (after the path)
 
 zip_path, good, count, bad, where = sys.argv[sys.argv.index("--") + 1:][:5]
 count = int(count)
@@ -20,12 +24,7 @@ def check(ok, what):
         failures.append(what)
 
 
-if bpy.app.version >= (4, 2, 0):
-    bpy.ops.extensions.package_install_files(
-        filepath=zip_path, repo="user_default", enable_on_install=True)
-else:
-    bpy.ops.preferences.addon_install(filepath=zip_path)
-    bpy.ops.preferences.addon_enable(module="phyllo_import")
+install_addon(zip_path)
 
 check(hasattr(bpy.types, "IMPORT_SCENE_OT_phyllotaxis"),
       "the add-on is installed and enabled")

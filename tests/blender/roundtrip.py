@@ -4,18 +4,17 @@
 # (the instances made), best of three.
 # Usage: blender -b --factory-startup --python roundtrip.py -- ZIP SCENE
 # Prints "roundtrip: SECONDS ORGANS".
+import os
 import sys
 import time
 
 import bpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from install import install_addon  # noqa: E402 (after the path)
+
 zip_path, scene = sys.argv[sys.argv.index("--") + 1:][:2]
-if bpy.app.version >= (4, 2, 0):
-    bpy.ops.extensions.package_install_files(
-        filepath=zip_path, repo="user_default", enable_on_install=True)
-else:
-    bpy.ops.preferences.addon_install(filepath=zip_path)
-    bpy.ops.preferences.addon_enable(module="phyllo_import")
+install_addon(zip_path)
 bpy.ops.import_scene.phyllotaxis(filepath=scene)
 st = bpy.context.scene.phyllo_structure.phyllo
 scale = next(s for s in st.settings if s.path == "planar.scale")
