@@ -357,16 +357,21 @@ def active_structure(context):
     return top if top is not None and top.phyllo.scene else None
 
 
-class PHYLLO_OT_update(bpy.types.Operator):
+class OnStructure:
+    """What the panel's operators share: they act on the active
+    structure, and are greyed out without one."""
+
+    @classmethod
+    def poll(cls, context):
+        return active_structure(context) is not None
+
+
+class PHYLLO_OT_update(OnStructure, bpy.types.Operator):
     """Run phyllo-export with the panel's settings and build the
     structure again"""
     bl_idname = "phyllo.update"
     bl_label = "Update"
     bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        return active_structure(context) is not None
 
     def execute(self, context):
         try:
@@ -377,15 +382,11 @@ class PHYLLO_OT_update(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class PHYLLO_OT_revert(bpy.types.Operator):
+class PHYLLO_OT_revert(OnStructure, bpy.types.Operator):
     """Set every setting back to the scene file's and build again"""
     bl_idname = "phyllo.revert"
     bl_label = "Revert"
     bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        return active_structure(context) is not None
 
     def execute(self, context):
         top = active_structure(context)
@@ -400,16 +401,12 @@ class PHYLLO_OT_revert(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class PHYLLO_OT_save(bpy.types.Operator):
+class PHYLLO_OT_save(OnStructure, bpy.types.Operator):
     """Write the changed settings into the scene file, keeping its
     comments and layout (phyllo-export --cfg)"""
     bl_idname = "phyllo.save"
     bl_label = "Save to Scene File"
     bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        return active_structure(context) is not None
 
     def execute(self, context):
         top = active_structure(context)

@@ -19,6 +19,9 @@ import sys
 
 import bpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from install import install_addon  # noqa: E402 (after the path)
+
 zip_path, scene, folder = sys.argv[sys.argv.index("--") + 1:][:3]
 failures = []
 
@@ -29,12 +32,7 @@ def check(ok, what):
         failures.append(what)
 
 
-if bpy.app.version >= (4, 2, 0):
-    bpy.ops.extensions.package_install_files(
-        filepath=zip_path, repo="user_default", enable_on_install=True)
-else:
-    bpy.ops.preferences.addon_install(filepath=zip_path)
-    bpy.ops.preferences.addon_enable(module="phyllo_import")
+install_addon(zip_path)
 
 
 def positions():
@@ -73,7 +71,13 @@ def contents():
                   for d in getattr(bpy.data, kind))
 
 
+# The panel's operators act on a structure: greyed out until one is.
+ops = (bpy.ops.phyllo.update, bpy.ops.phyllo.revert, bpy.ops.phyllo.save)
+check(not any(op.poll() for op in ops),
+      "Update, Revert and Save are greyed out without a structure")
 bpy.ops.import_scene.phyllotaxis(filepath=scene)
+check(all(op.poll() for op in ops),
+      "Update, Revert and Save are live once a structure is imported")
 top = bpy.context.scene.phyllo_structure
 check(top is not None and top.phyllo.scene == scene,
       "the import remembers its scene file on the collection")
