@@ -15,11 +15,11 @@
 
 #include "diag.h"
 #include "mem.h"
-#include "model.h"
-#include "output.h"
-#include "override.h"
+#include "models/model.h"
+#include "writers/output.h"
+#include "scene/override.h"
 #include "run.h"
-#include "writer.h"
+#include "writers/writer.h"
 
 #ifndef SHAREDIR
 #define SHAREDIR "/usr/local/share/phyllo-export"

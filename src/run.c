@@ -26,12 +26,12 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "compound.h"
+#include "scene/compound.h"
 #include "diag.h"
-#include "meshes.h"
-#include "output.h"
-#include "override.h"
-#include "plan.h"
+#include "meshes/meshes.h"
+#include "writers/output.h"
+#include "scene/override.h"
+#include "writers/plan.h"
 #include "run.h"
 
 /* A frame made: its structures, and what its writer writes of them. */

@@ -5,9 +5,9 @@
 #ifndef RUN_H
 #define RUN_H
 
-#include "sink.h"
-#include "template.h"
-#include "writer.h"
+#include "writers/sink.h"
+#include "writers/template.h"
+#include "writers/writer.h"
 
 /* What main.c asks for. */
 struct job {

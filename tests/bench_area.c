@@ -7,8 +7,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "model.h"
-#include "scene.h"
+#include "models/model.h"
+#include "scene/scene.h"
 #include "clock.h"
 
 /* Best of three seconds to run the scene's model; count placed. */

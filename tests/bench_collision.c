@@ -11,8 +11,8 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include "model.h"
-#include "scene.h"
+#include "models/model.h"
+#include "scene/scene.h"
 #include "clock.h"
 
 /* Seconds to place a full dome of radius-r primordia; count placed. */

@@ -9,8 +9,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "model.h"
-#include "scene.h"
+#include "models/model.h"
+#include "scene/scene.h"
 #include "clock.h"
 #include "dense.h"
 

@@ -16,8 +16,8 @@
 #include <unistd.h>
 
 #include "clock.h"
-#include "model.h"
-#include "scene.h"
+#include "models/model.h"
+#include "scene/scene.h"
 
 #define LIMIT	60	/* seconds a case may take */
 

@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "numfmt.h"
+#include "writers/numfmt.h"
 
 static double
 now(void)

@@ -10,11 +10,11 @@
 #include <string.h>
 
 #include "clock.h"
-#include "model.h"
-#include "parastichy.h"
-#include "scene.h"
-#include "sink.h"
-#include "writer.h"
+#include "models/model.h"
+#include "analysis/parastichy.h"
+#include "scene/scene.h"
+#include "writers/sink.h"
+#include "writers/writer.h"
 
 #define ROUNDS	3
 

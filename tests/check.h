@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "organ.h"
+#include "result/organ.h"
 
 static const char *check_topic = "";
 static int check_failures;

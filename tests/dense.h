@@ -10,7 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "organ.h"
+#include "result/organ.h"
 
 /* Each organ's distance from the axis in the output. */
 static const double *rho;

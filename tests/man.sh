@@ -1,7 +1,7 @@
 #!/bin/sh
 # man.sh - the man pages are clean mdoc, and phyllo-export(5) lists
-# exactly the settings of the tables (src/settings.c, each model's own
-# file, src/receptacle.c), with their types and defaults.
+# exactly the settings of the tables (src/scene/settings.c, each model's own
+# file in src/models/, src/geometry/receptacle.c), with their types and defaults.
 . tests/lib.sh
 
 if [ -n "${MANDOC:-}" ]; then

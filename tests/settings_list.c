@@ -1,7 +1,7 @@
 /* settings_list.c - print the settings table, for the man page check. */
 #include <stdio.h>
 
-#include "settings.h"
+#include "scene/settings.h"
 
 int
 main(void)

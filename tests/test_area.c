@@ -19,8 +19,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model.h"
-#include "scene.h"
+#include "models/model.h"
+#include "scene/scene.h"
 #include "check.h"
 
 #define R	1.3

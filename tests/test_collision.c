@@ -18,9 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model.h"
-#include "receptacle.h"
-#include "scene.h"
+#include "models/model.h"
+#include "geometry/receptacle.h"
+#include "scene/scene.h"
 #include "check.h"
 
 #define TOL	1e-9

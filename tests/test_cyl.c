@@ -8,11 +8,11 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cyl.h"
-#include "model.h"
-#include "scene.h"
+#include "models/cylindrical_lattice.h"
+#include "models/model.h"
+#include "scene/scene.h"
 #include "check.h"
-#include "vec.h"
+#include "geometry/vec.h"
 
 
 /* ABOP Table 4.1, the 15 rows with a diameter. */

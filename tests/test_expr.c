@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "expr.h"
+#include "scene/expr.h"
 #include "check.h"
 
 

@@ -8,12 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model.h"
-#include "parastichy.h"
-#include "numfmt.h"
-#include "scene.h"
+#include "models/model.h"
+#include "analysis/parastichy.h"
+#include "writers/numfmt.h"
+#include "scene/scene.h"
 #include "check.h"
-#include "vec.h"
+#include "geometry/vec.h"
 
 
 /* A deterministic stream of doubles for the formatter checks. */

@@ -16,9 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "model.h"
-#include "parastichy.h"
-#include "scene.h"
+#include "models/model.h"
+#include "analysis/parastichy.h"
+#include "scene/scene.h"
 #include "check.h"
 
 static int

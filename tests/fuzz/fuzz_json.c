@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json.h"
+#include "writers/json.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

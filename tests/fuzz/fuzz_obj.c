@@ -10,11 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh.h"
-#include "meshes.h"
-#include "mtl.h"
-#include "obj.h"
-#include "writer.h"
+#include "meshes/mesh.h"
+#include "meshes/meshes.h"
+#include "meshes/mtl.h"
+#include "meshes/obj.h"
+#include "writers/writer.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -18,12 +18,12 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "compound.h"
-#include "flatten.h"
-#include "model.h"
-#include "plan.h"
-#include "scene.h"
-#include "writer.h"
+#include "scene/compound.h"
+#include "result/flatten.h"
+#include "models/model.h"
+#include "writers/plan.h"
+#include "scene/scene.h"
+#include "writers/writer.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

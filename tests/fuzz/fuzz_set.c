@@ -9,10 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cfgtext.h"
-#include "json.h"
-#include "override.h"
-#include "scene.h"
+#include "scene/cfgtext.h"
+#include "writers/json.h"
+#include "scene/override.h"
+#include "scene/scene.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

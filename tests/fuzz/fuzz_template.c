@@ -6,10 +6,10 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "model.h"
-#include "scene.h"
-#include "template.h"
-#include "writer.h"
+#include "models/model.h"
+#include "scene/scene.h"
+#include "writers/template.h"
+#include "writers/writer.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

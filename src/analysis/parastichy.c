@@ -1,0 +1,840 @@
+/*
+ * parastichy.c - the contact parastichies measured on the organs as
+ * placed, for every model: no formula of the model is used, so they hold
+ * for the collision, area and inhibition models alike.
+ *
+ * At each organ the two nearest earlier neighbours turning either way
+ * about the axis are its contacts; the index differences to them are the pair of
+ * opposed parastichies through it (Vogel's 13 and 21, van Iterson's m
+ * and n).  Along the structure the organs are taken in runs, each run's
+ * most common pair is its pair, and runs with the same pair join into
+ * zones: 34/55, then 21/34, then 13/21 up a coneflower.
+ *
+ * Neighbours come from a k-d tree, because organ sizes may differ by
+ * orders of magnitude (the inhibition model's grown radii) where a grid
+ * of one cell size would not do.  Written here: Debian has no small C
+ * library for it, and it is a hundred lines.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mem.h"
+#include "analysis/parastichy.h"
+#include "scene/scene.h"
+
+#define K	8	/* neighbours looked at: a lattice point has 6 */
+#define RUNS	48	/* runs the structure is cut into for the zones */
+#define SAMPLE	2048	/* organs measured in a run at most */
+
+/*
+ * The organs' positions are copied into one array, so that a search
+ * reads them in order and not through 120-byte organs, and the tree
+ * is built over it: a node splits its range [lo, hi) at m on one axis,
+ * every point before m at or below its split value and every point
+ * from m on at or above; a range of LEAF points or fewer is a leaf,
+ * read through.
+ */
+struct kpt {
+	double		 p[3];
+	size_t		 i;	/* the organ */
+};
+
+struct knode {
+	double		 split;
+	size_t		 m;	/* 0: a leaf */
+	size_t		 right;	/* the node of [m, hi); [lo, m)'s is next */
+	int		 axis;
+};
+
+struct kd {
+	struct kpt	*pt;
+	size_t		 n;
+	struct knode	*node;
+	size_t		 nnode, cap;
+};
+
+#define LEAF	16
+
+static void
+kpt_swap(struct kpt *a, struct kpt *b)
+{
+	struct kpt t = *a;
+
+	*a = *b;
+	*b = t;
+}
+
+/*
+ * Split pt[lo..hi) on axis about the median of nine points spread over
+ * it, in one pass (Hoare's: points equal to it go to either side, so
+ * a range of equal values still halves); where the halves start.  A
+ * sample's median, not the exact one: a quickselect's passes made the
+ * build cost more than all the searches, and a split a little off the
+ * middle costs a search a little depth.
+ */
+static size_t
+split(struct kpt *pt, size_t lo, size_t hi, int axis, double *value)
+{
+	double s[9], v;
+	size_t i = lo, j = hi - 1;
+
+	/* Sorted as they are read in: nine, not worth qsort()'s calls. */
+	for (int k = 0; k < 9; k++) {
+		double x = pt[lo + (hi - lo - 1) * (size_t)k / 8].p[axis];
+		int at = k;
+
+		for (; at > 0 && s[at - 1] > x; at--)
+			s[at] = s[at - 1];
+		s[at] = x;
+	}
+	v = *value = s[4];
+	for (;;) {
+		while (pt[i].p[axis] < v)
+			i++;
+		while (pt[j].p[axis] > v)
+			j--;
+		if (i >= j)
+			break;
+		kpt_swap(&pt[i], &pt[j]);
+		i++;
+		j--;
+	}
+	/* pt[lo..i) <= v <= pt[j + 1..hi), and j < i. */
+	return j + 1;
+}
+
+/*
+ * Build over pt[lo..hi), inside the box bmin..bmax: split on the box's
+ * widest axis (a flat head has no spread in z: splitting there would
+ * make every search look on both sides).  The halves' boxes are this
+ * one cut at the split, not measured again.
+ */
+static void
+build(struct kd *T, size_t lo, size_t hi, const double bmin[3],
+    const double bmax[3])
+{
+	size_t at = T->nnode++, m = 0;
+	double cut[3], v = 0;
+	int axis = 0;
+
+	if (T->nnode > T->cap) {
+		T->cap = 2 * T->cap + 64;
+		T->node = xreallocarray(T->node, T->cap, sizeof(*T->node));
+	}
+	for (int a = 1; a < 3; a++)
+		if (bmax[a] - bmin[a] > bmax[axis] - bmin[axis])
+			axis = a;
+	if (hi - lo > LEAF) {
+		m = split(T->pt, lo, hi, axis, &v);
+		/*
+		 * Both halves hold points: the scan from lo stops at or
+		 * before the last of the nine (which is at hi - 1), and m
+		 * = hi would need v at hi - 1 alone, the most of five of
+		 * the nine.  Were it not so, a leaf, not a loop.
+		 */
+		if (m <= lo || m >= hi)
+			m = 0;
+	}
+	T->node[at] = (struct knode){ v, m, 0, axis };
+	if (m == 0)
+		return;
+	memcpy(cut, bmax, sizeof(cut));
+	cut[axis] = v;
+	build(T, lo, m, bmin, cut);
+	T->node[at].right = T->nnode;
+	memcpy(cut, bmin, sizeof(cut));
+	cut[axis] = v;
+	build(T, m, hi, cut, bmax);
+}
+
+/* The K nearest, kept sorted by distance, then by index. */
+struct near {
+	size_t	 j[K];
+	double	 d2[K];
+	int	 n;
+};
+
+/*
+ * Equal distances (a lattice on a cylinder has them) go by index, so
+ * the neighbours found do not hang on the order the tree is read in.
+ */
+static inline int
+nearer(double d2, size_t j, double e2, size_t k)
+{
+	return d2 < e2 || (d2 == e2 && j < k);
+}
+
+static void
+near_add(struct near *nb, size_t j, double d2)
+{
+	int k;
+
+	if (nb->n == K) {
+		if (!nearer(d2, j, nb->d2[K - 1], nb->j[K - 1]))
+			return;
+		k = K - 1;
+	} else
+		k = nb->n++;
+	while (k > 0 && nearer(d2, j, nb->d2[k - 1], nb->j[k - 1])) {
+		nb->d2[k] = nb->d2[k - 1];
+		nb->j[k] = nb->j[k - 1];
+		k--;
+	}
+	nb->d2[k] = d2;
+	nb->j[k] = j;
+}
+
+/*
+ * A search from p: the K nearest but organ self, or of those before
+ * self if earlier; distances in units of scale, a power of two near
+ * p's size, so that their squares neither overflow nor underflow where
+ * the organs span e^700 (the inhibition model's grown radii): unscaled,
+ * every square past 1e154 was infinite, every side of every node then
+ * as near as the K-th, and the search read the whole tree.
+ */
+struct look {
+	double		 p[3];
+	double		 inv;		/* 1 / scale, exact */
+	size_t		 self;
+	int		 earlier;
+};
+
+static void
+look_init(struct look *lk, const double p[3], size_t self, int earlier)
+{
+	double m = fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2])));
+	int e = 0;
+
+	if (m > 0 && isfinite(m))
+		frexp(m, &e);
+	memcpy(lk->p, p, sizeof(lk->p));
+	lk->inv = ldexp(1, -e);
+	lk->self = self;
+	lk->earlier = earlier;
+}
+
+/* Point pt's distance to the look's, added to nb if it may be one. */
+static inline void
+consider(const struct kpt *pt, const struct look *lk, struct near *nb)
+{
+	double dx = (pt->p[0] - lk->p[0]) * lk->inv;
+	double dy = (pt->p[1] - lk->p[1]) * lk->inv;
+	double dz = (pt->p[2] - lk->p[2]) * lk->inv;
+	size_t self = lk->self;
+	int earlier = lk->earlier;
+
+	if (earlier ? pt->i < self : pt->i != self)
+		near_add(nb, pt->i, dx * dx + dy * dy + dz * dz);
+}
+
+/*
+ * The look's K nearest in the subtree at node at, over [lo, hi), whose
+ * box is rd (squared, in the look's units) from the look's point: off
+ * holds, per axis, how far the point lies outside the box (Arya and
+ * Mount's incremental distance), so a far side is passed when its box,
+ * not only its splitting plane, is farther than the K-th found.
+ */
+static void
+query(const struct kd *T, size_t at, size_t lo, size_t hi,
+    const struct look *lk, struct near *nb, double rd, double off[3])
+{
+	const struct knode *nd = &T->node[at];
+	double diff, old, far;
+	int a;
+
+	if (nd->m == 0) {
+		for (size_t k = lo; k < hi; k++)
+			consider(&T->pt[k], lk, nb);
+		return;
+	}
+	a = nd->axis;
+	diff = (lk->p[a] - nd->split) * lk->inv;
+	old = off[a];
+	far = rd - old * old + diff * diff;
+	if (diff < 0) {
+		query(T, at + 1, lo, nd->m, lk, nb, rd, off);
+		if (nb->n < K || far <= nb->d2[nb->n - 1]) {
+			off[a] = diff;
+			query(T, nd->right, nd->m, hi, lk, nb, far, off);
+			off[a] = old;
+		}
+	} else {
+		query(T, nd->right, nd->m, hi, lk, nb, rd, off);
+		if (nb->n < K || far <= nb->d2[nb->n - 1]) {
+			off[a] = diff;
+			query(T, at + 1, lo, nd->m, lk, nb, far, off);
+			off[a] = old;
+		}
+	}
+}
+
+/* The K nearest to p but self, or of those before self if earlier. */
+static void
+nearest(const struct kd *T, const double p[3], size_t self, int earlier,
+    struct near *nb)
+{
+	struct look lk;
+
+	look_init(&lk, p, self, earlier);
+	query(T, 0, 0, T->n, &lk, nb, 0, (double [3]){ 0, 0, 0 });
+}
+
+static void
+kd_init(struct kd *T, const struct result *r)
+{
+	double bmin[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+	double bmax[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+
+	*T = (struct kd){ .n = r->count };
+	T->pt = xcalloc(r->count ? r->count : 1, sizeof(*T->pt));
+	for (size_t i = 0; i < r->count; i++) {
+		memcpy(T->pt[i].p, r->organs[i].pos, sizeof(T->pt[i].p));
+		T->pt[i].i = i;
+		for (int a = 0; a < 3; a++) {
+			double v = T->pt[i].p[a];
+
+			/* Not fmin(): a call each, 6 M of them for 1 M organs. */
+			bmin[a] = v < bmin[a] ? v : bmin[a];
+			bmax[a] = v > bmax[a] ? v : bmax[a];
+		}
+	}
+	build(T, 0, r->count, bmin, bmax);
+}
+
+static void
+kd_free(struct kd *T)
+{
+	free(T->pt);
+	free(T->node);
+}
+
+/* The nearest earlier neighbour of i in nb on each side, or -1. */
+static void
+sides(const struct result *r, size_t i, const struct near *nb,
+    long long side[2])
+{
+	const double *p = r->organs[i].pos;
+	double ro = hypot(p[0], p[1]);
+
+	/* Only the earlier ones count, the first either way. */
+	for (int k = 0; k < nb->n && (side[0] < 0 || side[1] < 0); k++) {
+		const double *q = r->organs[nb->j[k]].pos;
+		double rq;
+
+		if (nb->j[k] >= i)
+			continue;
+		rq = hypot(q[0], q[1]);
+		/* Of unit vectors: radii may span e^700 (grown radii). */
+		double turn = (p[0] / ro) * (q[1] / rq) - (p[1] / ro) *
+		    (q[0] / rq);
+		int s = turn > 0;
+
+		/*
+		 * On the same line through the axis (alternate leaves, a
+		 * rank of a whorl) a neighbour turns neither way: rounding
+		 * must not make it a parastichy.
+		 */
+		if (!(fabs(turn) > 1e-9))
+			continue;
+		if (side[s] < 0)
+			side[s] = (long long)nb->j[k];
+	}
+}
+
+/* Organ i's pair, from the tree. */
+static void
+pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
+{
+	const struct organ *o = &r->organs[i];
+	struct near nb = { .n = 0 };
+	long long side[2] = { -1, -1 };
+
+	pair[0] = pair[1] = 0;
+	/* On the axis no organ turns either way. */
+	if (hypot(o->pos[0], o->pos[1]) < 1e-9 * (o->radius + 1e-300))
+		return;
+	nearest(T, o->pos, i, 0, &nb);
+	/*
+	 * Earlier neighbours only: a parastichy through i has a neighbour
+	 * on either side of it, i - m one way and i + m the other, so only
+	 * the earlier ones tell the two families apart.  The side is the
+	 * sign of the turn from i to the neighbour about the axis.
+	 */
+	sides(r, i, &nb, side);
+	if (side[0] < 0 || side[1] < 0) {
+		/*
+		 * Where the radii grow fast (the inhibition model's grown
+		 * radii) every later organ may be nearer than any earlier
+		 * one: then the earlier ones alone, a slower search.
+		 */
+		nb.n = 0;
+		nearest(T, o->pos, i, 1, &nb);
+		sides(r, i, &nb, side);
+	}
+	if (side[0] < 0 || side[1] < 0)
+		return;
+	for (int s = 0; s < 2; s++)
+		pair[s] = (int)((long long)i - side[s]);
+	if (pair[0] > pair[1]) {
+		int t = pair[0];
+
+		pair[0] = pair[1];
+		pair[1] = t;
+	}
+}
+
+
+void
+para_nearest(const struct result *r, double *d)
+{
+	struct kd T;
+
+	kd_init(&T, r);
+	for (size_t t = 0; t < r->count; t++) {
+		size_t i = T.pt[t].i;
+		struct near nb = { .n = 0 };
+		struct look lk;
+
+		look_init(&lk, T.pt[t].p, i, 0);
+		query(&T, 0, 0, T.n, &lk, &nb, 0, (double [3]){ 0, 0, 0 });
+		/* In the look's units: scaled back, exactly. */
+		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) / lk.inv : HUGE_VAL;
+	}
+	kd_free(&T);
+}
+
+void
+para_pairs(const struct result *r, int (*pair)[2])
+{
+	struct kd T;
+
+	kd_init(&T, r);
+	/* In tree order: neighbours in space are then neighbours in memory. */
+	for (size_t t = 0; t < r->count; t++)
+		pair_at(&T, r, T.pt[t].i, pair[T.pt[t].i]);
+	kd_free(&T);
+}
+
+struct tally {
+	int	 m, n;
+	size_t	 first;		/* where it stood in the sample */
+};
+
+static int
+tally_cmp(const void *a, const void *b)
+{
+	const struct tally *x = a, *y = b;
+
+	if (x->m != y->m)
+		return x->m < y->m ? -1 : 1;
+	if (x->n != y->n)
+		return x->n < y->n ? -1 : 1;
+	return x->first < y->first ? -1 : x->first > y->first;
+}
+
+/*
+ * The most common pair among the n of pair, or 0 0; of equally common
+ * ones the one met first; how many organs hold it.  Sorted, so a sample
+ * of thousands is cheap.
+ */
+static size_t
+modal(const int (*pair)[2], size_t n, int out[2])
+{
+	struct tally *t = xcalloc(n ? n : 1, sizeof(*t));
+	size_t nt = 0, best = 0, bestfirst = 0;
+
+	out[0] = out[1] = 0;
+	for (size_t i = 0; i < n; i++)
+		if (pair[i][0] != 0)
+			t[nt++] = (struct tally){ pair[i][0], pair[i][1], i };
+	qsort(t, nt, sizeof(*t), tally_cmp);
+	for (size_t i = 0, j; i < nt; i = j) {
+		for (j = i; j < nt && t[j].m == t[i].m && t[j].n == t[i].n; j++)
+			;
+		/* t[i] is the group's first in the sample. */
+		if (j - i > best || (j - i == best && t[i].first < bestfirst)) {
+			best = j - i;
+			bestfirst = t[i].first;
+			out[0] = t[i].m;
+			out[1] = t[i].n;
+		}
+	}
+	free(t);
+	return best;
+}
+
+int
+para_gcd(int a, int b)
+{
+	while (b != 0) {
+		int t = a % b;
+
+		a = b;
+		b = t;
+	}
+	return a;
+}
+
+/* Organ k's angle about the axis, in turns. */
+static double
+turns(const struct result *r, long long k)
+{
+	return atan2(r->organs[k].pos[1], r->organs[k].pos[0]) / (2 * M_PI);
+}
+
+/*
+ * Whether m and n, the contacts of organ i, span the lattice the organs
+ * make in index and turn, as the two families of a spiral do: going
+ * back m organs winds p whole turns and n organs q turns, with m q - n p
+ * = +-1.  Coprime m and n are not enough: 13 and 55 at the golden angle
+ * wind 5 and 21 turns, 13 x 21 - 55 x 5 = -2, and are two halves of
+ * different patterns, where the lattice's own pair is 21/34.  The turns
+ * are the steps from organ to organ, each the shorter way round, summed.
+ */
+static int
+spans(const struct result *r, long long i, int m, int n)
+{
+	double w = 0, wm = 0, prev;
+	long long p, q;
+
+	if (i < n)
+		return 0;
+	prev = turns(r, i - n);
+	for (long long k = i - n + 1; k <= i; k++) {
+		double t = turns(r, k);
+
+		w += remainder(t - prev, 1.0);
+		prev = t;
+		if (k == i - m)
+			wm = w;
+	}
+	/* Back from i: m organs wound w - wm turns, n organs w. */
+	p = llround(w - wm);
+	q = llround(w);
+	return llabs((long long)m * q - (long long)n * p) == 1;
+}
+
+/*
+ * A run shows one family pair when its most common pair is held by at
+ * least half its organs and spans the lattice at an organ holding it:
+ * two families of one spiral, which also share no factor, so 34/68 is
+ * two pairs' contacts mixed (a transition), never a pattern of its own.
+ */
+static int
+family_pair(const struct result *r, long long at, const int m[2],
+    size_t held, size_t n)
+{
+	return m[0] > 0 && 2 * held >= n && para_gcd(m[0], m[1]) == 1 &&
+	    spans(r, at, m[0], m[1]);
+}
+
+/* The larger number a zone names: its pair's, or a transition's largest. */
+static int
+zone_n(const struct para_zone *z)
+{
+	int n = z->n;
+
+	for (int k = 0; k < z->nseen; k++)
+		if (z->seen[k][1] > n)
+			n = z->seen[k][1];
+	return n;
+}
+
+int
+para_seen_text(const struct para_zone *z, char *buf, size_t size)
+{
+	int len = snprintf(buf, size, "transition");
+
+	for (int k = 0; k < z->nseen && len >= 0 && (size_t)len < size; k++)
+		len += snprintf(buf + len, size - (size_t)len, " %d/%d",
+		    z->seen[k][0], z->seen[k][1]);
+	return len;
+}
+
+size_t
+para_zones(const struct result *r, const int (*pair)[2], struct para_zone *z,
+    size_t zmax)
+{
+	size_t N = r->count, runs = N < RUNS * 8 ? (N + 7) / 8 : RUNS, nz = 0;
+	struct kd T = { 0 };
+	int (*s)[2] = xcalloc(SAMPLE, sizeof(*s));
+
+	if (pair == NULL)
+		kd_init(&T, r);
+	for (size_t k = 0; k < runs && N > 0; k++) {
+		size_t from = N * k / runs, to = N * (k + 1) / runs;
+		size_t step = to - from > SAMPLE ? (to - from) / SAMPLE : 1, n = 0;
+		int m[2], fam;
+		size_t held, at;
+
+		/* The modal pair of an even sample of a long run is its own. */
+		for (size_t i = from; i < to && n < SAMPLE; i += step, n++)
+			if (pair != NULL)
+				memcpy(s[n], pair[i], sizeof(s[0]));
+			else
+				pair_at(&T, r, i, s[n]);
+		held = modal((const int (*)[2])s, n, m);
+		if (m[0] == 0)
+			continue;
+		/* The last organ holding it: the most earlier ones to wind. */
+		at = n - 1;
+		while (s[at][0] != m[0] || s[at][1] != m[1])
+			at--;
+		fam = family_pair(r, (long long)(from + at * step), m, held, n);
+		/*
+		 * A run that holds a zone's pair less than half the time
+		 * at its ends (the few organs at a pole or the first ones)
+		 * belongs to it when that pair is still its most common.
+		 */
+		if (nz > 0 && z[nz - 1].m == 0 && z[nz - 1].nseen == 1 &&
+		    fam && z[nz - 1].seen[0][0] == m[0] &&
+		    z[nz - 1].seen[0][1] == m[1]) {
+			z[nz - 1].m = m[0];
+			z[nz - 1].n = m[1];
+			z[nz - 1].nseen = 0;
+			continue;
+		}
+		if (!fam && nz > 0 && z[nz - 1].m == m[0] && z[nz - 1].n ==
+		    m[1])
+			continue;
+		if (nz > 0 && (fam ? z[nz - 1].m == m[0] && z[nz - 1].n ==
+		    m[1] : z[nz - 1].m == 0)) {
+			/* A transition goes on: note a pair it had not shown. */
+			struct para_zone *t = &z[nz - 1];
+			int k = 0;
+
+			while (!fam && k < t->nseen && (t->seen[k][0] != m[0] ||
+			    t->seen[k][1] != m[1]))
+				k++;
+			if (!fam && k == t->nseen && k < PARA_SEEN) {
+				t->seen[k][0] = m[0];
+				t->seen[k][1] = m[1];
+				t->nseen++;
+			}
+			continue;
+		}
+		if (nz == zmax)
+			break;
+		z[nz] = (struct para_zone){ .from = (long long)from,
+		    .m = fam ? m[0] : 0, .n = fam ? m[1] : 0,
+		    .seen = { { m[0], m[1] } }, .nseen = fam ? 0 : 1,
+		    .rho = hypot(r->organs[from].pos[0], r->organs[from].pos[1]),
+		    .z = r->organs[from].pos[2] };
+		nz++;
+	}
+	/*
+	 * The first organs have too few earlier ones to show their true
+	 * contacts: a zone that ends before about 1.5 n of the next zone's
+	 * pair is their artefact, not a pattern.
+	 */
+	while (nz > 1 && (double)z[1].from <= 1.5 * zone_n(&z[1])) {
+		memmove(z, z + 1, (nz - 1) * sizeof(*z));
+		nz--;
+	}
+	free(s);
+	if (pair == NULL)
+		kd_free(&T);
+	return nz;
+}
+
+/* -1, 0, 1: pair a below, at, above b (by the larger number, then the smaller). */
+static int
+pair_cmp(const int a[2], const int b[2])
+{
+	if (a[1] != b[1])
+		return a[1] < b[1] ? -1 : 1;
+	return a[0] < b[0] ? -1 : a[0] > b[0];
+}
+
+/* Where want stands at t in [0, 1] of the log range, from below (-1). */
+static int
+side_at(double t, double lo, double hi, int grows, const int want[2],
+    para_measure_fn *measure, void *ctx, int *err)
+{
+	/* t = 0 is the small-pair end: hi for a radius, lo for a count. */
+	double x = grows ? lo * pow(hi / lo, t) : hi * pow(lo / hi, t);
+	int pair[2];
+
+	if (measure(ctx, x, pair) != 0) {
+		*err = 1;
+		return 0;
+	}
+	return pair[0] == 0 ? -1 : pair_cmp(pair, want);
+}
+
+double
+para_search(const int want[2], double lo, double hi, int grows,
+    para_measure_fn *measure, void *ctx, char *reach, size_t reachsz)
+{
+	enum { STEPS = 20 };
+	int seen[STEPS + 1][2], nseen = 0, err = 0, prev = -2;
+	double tf = -1, a, b, t0, t1;
+
+	reach[0] = '\0';
+	/* Step from the small pairs up, until want shows or is passed. */
+	for (int k = 0; k <= STEPS && tf < 0; k++) {
+		double t = (double)k / STEPS;
+		double x = grows ? lo * pow(hi / lo, t) : hi * pow(lo / hi, t);
+		int pair[2], c;
+
+		if (measure(ctx, x, pair) != 0)
+			return -1;
+		if (pair[0] == 0)
+			continue;
+		if (nseen == 0 || pair_cmp(seen[nseen - 1], pair) != 0) {
+			seen[nseen][0] = pair[0];
+			seen[nseen][1] = pair[1];
+			nseen++;
+		}
+		c = pair_cmp(pair, want);
+		if (c == 0) {
+			tf = t;
+			break;
+		}
+		if (c > 0 && prev < 0 && k > 0) {
+			/* Passed between two steps: look between them. */
+			a = (double)(k - 1) / STEPS;
+			b = t;
+			for (int it = 0; it < 30 && tf < 0; it++) {
+				double m = (a + b) / 2;
+				int cm = side_at(m, lo, hi, grows, want, measure,
+				    ctx, &err);
+
+				if (err)
+					return -1;
+				if (cm == 0)
+					tf = m;
+				else if (cm < 0)
+					a = m;
+				else
+					b = m;
+			}
+		}
+		if (c > 0)
+			break;
+		prev = c;
+	}
+	if (tf < 0) {
+		size_t len = 0;
+
+		for (int k = 0; k < nseen && len + 16 < reachsz; k++)
+			len += (size_t)snprintf(reach + len, reachsz - len,
+			    "%s%d/%d", k ? " " : "", seen[k][0], seen[k][1]);
+		return 0;
+	}
+	/* The stretch showing want: bracket both of its edges. */
+	a = 0;
+	b = tf;
+	for (int it = 0; it < 10; it++) {
+		double m = (a + b) / 2;
+		int c = side_at(m, lo, hi, grows, want, measure, ctx, &err);
+
+		if (err)
+			return -1;
+		if (c < 0)
+			a = m;
+		else
+			b = m;
+	}
+	t0 = b;
+	a = tf;
+	b = 1;
+	for (int it = 0; it < 10; it++) {
+		double m = (a + b) / 2;
+		int c = side_at(m, lo, hi, grows, want, measure, ctx, &err);
+
+		if (err)
+			return -1;
+		if (c > 0)
+			b = m;
+		else
+			a = m;
+	}
+	t1 = a;
+	a = (t0 + t1) / 2;
+	return grows ? lo * pow(hi / lo, a) : hi * pow(lo / hi, a);
+}
+
+int
+para_want_check(const struct scene *sc, int line, const char *path,
+    const struct int_list *want)
+{
+	int a;
+
+	if (want->n != 2 || want->v[0] >= want->v[1]) {
+		scene_error(sc, line, "%s must be a pair [m, n] with m < n",
+		    path);
+		return -1;
+	}
+	if ((a = para_gcd(want->v[0], want->v[1])) != 1) {
+		scene_error(sc, line, "%s [%d, %d] have the common factor %d: "
+		    "a single spiral shows coprime numbers", path, want->v[0],
+		    want->v[1], a);
+		return -1;
+	}
+	return 0;
+}
+
+struct design {
+	para_place_fn	*place;
+	void		*ctx;
+	long long	 cap;
+};
+
+/* The base pair of a trial radius, on a few organs. */
+static int
+design_pair(void *ctx, double r, int pair[2])
+{
+	const struct design *D = ctx;
+	struct result res = { 0 };
+	struct para_zone z[64];
+	size_t nz;
+
+	if (D->place(D->ctx, r, D->cap, &res) != 0)
+		return -1;
+	nz = para_zones(&res, NULL, z, 64);
+	pair[0] = nz ? z[0].m : 0;
+	pair[1] = nz ? z[0].n : 0;
+	result_free(&res);
+	return 0;
+}
+
+double
+para_design_radius(const struct scene *sc, int line, const char *path,
+    const struct int_list *want, double rim, double rhi,
+    para_place_fn *place, void *ctx)
+{
+	/* Enough organs for the base to show its pair, and not many more. */
+	struct design D = { place, ctx, 12LL * (want->v[0] + want->v[1]) };
+	char reach[512];
+	double r, est;
+
+	if (para_want_check(sc, line, path, want) != 0)
+		return -1;
+	if (!(rim > 0)) {
+		/* At a pole the pair changes organ by organ: no base pair. */
+		scene_error(sc, line, "parastichies = [m, n] needs a receptacle "
+		    "with a rim at its base: at a pole the pair changes from "
+		    "one organ to the next");
+		return -1;
+	}
+	/*
+	 * First near where such a pair usually lies, a base ring of about
+	 * n organs of radius 2.3 rim / n; then the whole range.
+	 */
+	est = 2.3 * rim / want->v[1];
+	r = para_search(want->v, est / 3, est * 3, 0,
+	    design_pair, &D, reach, sizeof(reach));
+	if (r == 0)
+		r = para_search(want->v, rhi / 200, rhi, 0, design_pair, &D,
+		    reach, sizeof(reach));
+	if (r == 0) {
+		scene_error(sc, line, "no constant radius shows parastichies "
+		    "%d/%d at the base of this receptacle; the radii tried "
+		    "show %s", want->v[0], want->v[1], reach);
+		return -1;
+	}
+	return r;
+}

@@ -1,0 +1,287 @@
+/*
+ * compound.c - load a scene and, depth first, the scenes its organs are
+ * made of; run them, parts before the structures that place them.
+ *
+ * Object names are one namespace across the whole tree, as they are in
+ * POV-Ray and in a .blend: a name made of a scene is made of that scene
+ * everywhere, and nowhere a plain object.  So each part is loaded and
+ * run once however often it is placed, and writers declare it once.
+ */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "scene/compound.h"
+#include "diag.h"
+#include "mem.h"
+#include "models/model.h"
+
+/* The scenes being loaded, innermost first: what a cycle would revisit. */
+struct chain {
+	const struct chain *up;
+	const char	*file;
+	const char	*object;	/* the object it makes; "" the main */
+	dev_t		 dev;
+	ino_t		 ino;
+};
+
+struct loader {
+	struct compound	*C;
+	const struct loading *ld;
+	int		(*check)(const struct scene *);
+};
+
+static struct part *
+find_part(const struct compound *C, const char *object)
+{
+	for (size_t i = 0; i < C->n; i++)
+		if (strcmp(C->parts[i]->object, object) == 0)
+			return C->parts[i];
+	return NULL;
+}
+
+char *
+compound_resolve(const char *from, const char *rel)
+{
+	const char *slash = strrchr(from, '/');
+	size_t dir = slash != NULL && strcmp(from, "<stdin>") != 0 ?
+	    (size_t)(slash - from + 1) : 0;
+	char *p;
+
+	if (rel[0] == '/' || dir == 0)
+		return xstrdup(rel);
+	p = xmalloc(dir + strlen(rel) + 1);
+	memcpy(p, from, dir);
+	strcpy(p + dir, rel);
+	return p;
+}
+
+/* "a.cfg -> b.cfg -> a.cfg": the chain from the top down to file. */
+static void
+chain_words(char *buf, size_t sz, const struct chain *c, const char *file)
+{
+	const struct chain *stack[COMPOUND_DEPTH_MAX + 1];
+	size_t n = 0, len = 0;
+
+	for (; c != NULL && n < COMPOUND_DEPTH_MAX; c = c->up)
+		stack[n++] = c;
+	buf[0] = '\0';
+	while (n-- > 0 && len < sz)
+		len += (size_t)snprintf(buf + len, sz - len, "%s -> ",
+		    stack[n]->file);
+	if (len < sz)
+		snprintf(buf + len, sz - len, "%s", file);
+}
+
+static int	load(struct loader *, const char *path, const char *object,
+		    const struct chain *up, int line);
+
+/* The parts a loaded scene names, each loaded unless it already is. */
+static int
+load_parts(struct loader *L, struct part *p, const struct chain *me)
+{
+	const struct scene *sc = &p->sc;
+
+	for (size_t j = 0; j < sc->nobjects; j++) {
+		const char *name = sc->objects[j];
+		const struct part *had;
+		char *path;
+		int rc = 0;
+
+		if (sc->object_scene[j] == NULL)
+			continue;
+		path = compound_resolve(p->file, sc->object_scene[j]);
+		had = find_part(L->C, name);
+		if (had != NULL) {
+			struct stat a, b;
+
+			if (stat(path, &a) != 0 || stat(had->file, &b) != 0 ||
+			    a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
+				diag(ST_SCENE, p->file, sc->object_line[j], 0,
+				    "organ object \"%s\" is made of %s here "
+				    "but of %s in %s: one name, one thing",
+				    name, path, had->file, had->from);
+				rc = -1;
+			}
+		} else
+			rc = load(L, path, name, me, sc->object_line[j]);
+		free(path);
+		if (rc != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/*
+ * Load the scene at path, making object ("" for the main scene), named
+ * by the scene up at line; its parts first, then itself onto the list.
+ */
+static int
+load(struct loader *L, const char *path, const char *object,
+    const struct chain *up, int line)
+{
+	struct chain me = { up, path, object, 0, 0 };
+	struct part *p;
+	struct stat st;
+	char words[1024];
+	int depth = 0, loaded;
+
+	if (up != NULL) {
+		/*
+		 * A part that cannot be read is an error in the scene naming
+		 * it (exit 1), wherever the reason lies; and a FIFO would
+		 * wait for a writer for ever.
+		 */
+		const char *why = stat(path, &st) != 0 ? strerror(errno) :
+		    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
+		    !S_ISREG(st.st_mode) ? "not a regular file" :
+		    access(path, R_OK) != 0 ? strerror(errno) : NULL;
+
+		if (why != NULL) {
+			diag(ST_SCENE, up->file, line, 0, "scene file %s of "
+			    "organ object \"%s\": %s", path, object, why);
+			return -1;
+		}
+		me.dev = st.st_dev;
+		me.ino = st.st_ino;
+		for (const struct chain *c = up; c != NULL; c = c->up) {
+			if ((c->dev == st.st_dev && c->ino == st.st_ino) ||
+			    strcmp(c->object, object) == 0) {
+				chain_words(words, sizeof(words), up, path);
+				diag(ST_SCENE, up->file, line, 0, "scenes "
+				    "include each other: %s", words);
+				return -1;
+			}
+			depth++;
+		}
+		if (depth >= COMPOUND_DEPTH_MAX ||
+		    L->C->n >= COMPOUND_PARTS_MAX) {
+			diag(ST_SCENE, up->file, line, 0, "more than %d %s",
+			    depth >= COMPOUND_DEPTH_MAX ? COMPOUND_DEPTH_MAX :
+			    COMPOUND_PARTS_MAX, depth >= COMPOUND_DEPTH_MAX ?
+			    "scenes in one chain of includes" :
+			    "parts in one structure");
+			return -1;
+		}
+	} else if (strcmp(path, "-") != 0 && stat(path, &st) == 0) {
+		me.dev = st.st_dev;
+		me.ino = st.st_ino;
+	}
+
+	p = xcalloc(1, sizeof(*p));
+	p->file = xstrdup(path);
+	snprintf(p->object, sizeof(p->object), "%s", object);
+	p->from = up != NULL ? up->file : NULL;
+	p->from_line = line;
+	loaded = scene_load_as(&p->sc, p->file, object, L->ld) == 0;
+	if (loaded)
+		me.file = p->sc.file;		/* "<stdin>" for "-" */
+	if (!loaded ||
+	    (L->check != NULL && L->check(&p->sc) != 0) ||
+	    load_parts(L, p, &me) != 0) {
+		if (up != NULL)
+			diag(ST_SCENE, up->file, line, 0, "in %s, the scene "
+			    "of organ object \"%s\" included here", path,
+			    object);
+		scene_free(&p->sc);
+		free(p->file);
+		free(p);
+		return -1;
+	}
+	L->C->parts = xreallocarray(L->C->parts, L->C->n + 1,
+	    sizeof(*L->C->parts));
+	L->C->parts[L->C->n++] = p;
+	return 0;
+}
+
+/*
+ * A name made of a scene is nowhere a plain object, and no part takes
+ * the main structure's name.
+ */
+static int
+names_agree(const struct compound *C)
+{
+	const struct part *top = C->parts[C->n - 1];
+
+	for (size_t i = 0; i < C->n; i++) {
+		const struct scene *sc = &C->parts[i]->sc;
+		const struct part *q;
+
+		if (C->parts[i] != top &&
+		    strcmp(C->parts[i]->object, top->sc.name) == 0) {
+			diag(ST_SCENE, C->parts[i]->from,
+			    C->parts[i]->from_line, 0, "organ object \"%s\" "
+			    "has the name of the structure, %s",
+			    top->sc.name, top->file);
+			return -1;
+		}
+		for (size_t j = 0; j < sc->nobjects; j++)
+			if (sc->object_scene[j] == NULL &&
+			    (q = find_part(C, sc->objects[j])) != NULL) {
+				diag(ST_SCENE, sc->file, sc->object_line[j], 0,
+				    "organ object \"%s\" is a plain object "
+				    "here but is made of %s in %s: one name, "
+				    "one thing", sc->objects[j], q->file,
+				    q->from);
+				return -1;
+			}
+	}
+	return 0;
+}
+
+int
+compound_load(struct compound *C, const char *path, const struct loading *ld,
+    int (*check)(const struct scene *))
+{
+	struct loader L = { C, ld, check };
+
+	*C = (struct compound){ NULL, 0 };
+	if (load(&L, path, "", NULL, 0) != 0)
+		return -1;
+	return names_agree(C);
+}
+
+int
+compound_run(struct compound *C, const struct frame *fr)
+{
+	for (size_t i = 0; i < C->n; i++) {
+		struct part *p = C->parts[i];
+		struct result *r = &p->res;
+
+		if (model_run(&p->sc, r) != 0) {
+			if (p->from != NULL)
+				diag(ST_SCENE, p->from, p->from_line, 0, "in %s, "
+				    "the scene of organ object \"%s\" included "
+				    "here", p->file, p->object);
+			return -1;
+		}
+		r->frames = fr != NULL ? fr->count : 1;
+		if (p->object[0] != '\0') {
+			r->part = 1;
+			memcpy(r->name, p->object, sizeof(r->name));
+		}
+		for (size_t j = 0; j < p->sc.nobjects; j++) {
+			if (p->sc.object_scene[j] == NULL)
+				continue;
+			if (r->sub == NULL)
+				r->sub = xcalloc(r->nobjects, sizeof(*r->sub));
+			r->sub[j] = &find_part(C, p->sc.objects[j])->res;
+		}
+	}
+	return 0;
+}
+
+void
+compound_free(struct compound *C)
+{
+	for (size_t i = 0; i < C->n; i++) {
+		result_free(&C->parts[i]->res);
+		scene_free(&C->parts[i]->sc);
+		free(C->parts[i]->file);
+		free(C->parts[i]);
+	}
+	free(C->parts);
+	*C = (struct compound){ NULL, 0 };
+}
