@@ -1,7 +1,7 @@
 /*
  * main.c - the command line: parse the options, load the template, and
- * hand the rest to run() (run.c); show progress on a terminal.  Only
- * this file chooses the exit status.
+ * hand the rest to run() (run.c), with progress shown on a terminal
+ * (progress.c).  Only this file chooses the exit status.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -10,13 +10,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "diag.h"
 #include "mem.h"
 #include "models/model.h"
 #include "writers/output.h"
+#include "progress.h"
 #include "scene/override.h"
 #include "run.h"
 #include "writers/writer.h"
@@ -24,64 +24,6 @@
 #ifndef SHAREDIR
 #define SHAREDIR "/usr/local/share/phyllo-export"
 #endif
-
-/*
- * A long run reports on a terminal once it has taken half a second: the
- * primordia a model has placed, then the bytes written.  The line is
- * rubbed out at the end, leaving the terminal as it was.
- */
-static struct timespec status_t0;
-static int status_width;
-
-static double
-status_seconds(void)
-{
-	struct timespec now;
-
-	clock_gettime(CLOCK_MONOTONIC, &now);
-	return (double)(now.tv_sec - status_t0.tv_sec) +
-	    (double)(now.tv_nsec - status_t0.tv_nsec) / 1e9;
-}
-
-static void
-status_clear(void)
-{
-	if (status_width > 0)
-		fprintf(stderr, "\r%*s\r", status_width, "");
-	status_width = 0;
-}
-
-static void
-placed(long long done, int last)
-{
-	double sec = status_seconds();
-
-	if (last)
-		status_clear();
-	else if (sec >= 0.5) {
-		status_width = fprintf(stderr, "\r%s: placed %lld primordia, "
-		    "%.0f a second ", diag_progname, done, done / sec) - 1;
-		fflush(stderr);
-	}
-}
-
-/* Ten times a second at most: a block goes out every 64 KiB. */
-static void
-written(const struct budget *b)
-{
-	static double next = 0.5;
-	char used[32], expected[32];
-	double now = status_seconds();
-
-	if (now < next)
-		return;
-	next = now + 0.1;
-	run_size_words(used, sizeof(used), b->used);
-	run_size_words(expected, sizeof(expected), b->expected);
-	status_width = fprintf(stderr, "\r%s: written %s of about %s ",
-	    diag_progname, used, expected) - 1;
-	fflush(stderr);
-}
 
 struct args {
 	const struct writer *writer;
@@ -412,18 +354,19 @@ main(int argc, char *argv[])
 	if (st < 0 && fflush(stdout) != 0)	/* --help, --version */
 		diag(ST_SYSTEM, "<stdout>", 0, 0, "%s", strerror(errno));
 	if (st == 0 && isatty(STDERR_FILENO)) {
-		clock_gettime(CLOCK_MONOTONIC, &status_t0);
-		model_progress = placed;
+		progress_start();
+		model_progress = progress_placed;
 	}
 	if (st == 0 && (a.writer->tmpl == NULL ||
 	    (t = load_template(&a, path, sizeof(path))) != NULL)) {
 		struct job j = { a.writer, t, path[0] ? path : NULL, a.scene,
 		    a.output, (a.objects ? TO_OBJECTS : 0) |
 		    (a.flatten ? TO_FLATTEN : 0), a.frames, a.set, a.nset,
-		    a.max_output, isatty(STDERR_FILENO) ? written : NULL };
+		    a.max_output, isatty(STDERR_FILENO) ? progress_written :
+		    NULL };
 
 		run(&j);
-		status_clear();
+		progress_clear();
 	}
 	tmpl_free(t);
 	diag_overrides(NULL, 0);
