@@ -80,6 +80,9 @@ double		 tmpl_bytes(const struct tmpl *, enum tmpl_piece,
 		    const struct result *const *all, size_t n, unsigned opts);
 void		 tmpl_free(struct tmpl *);
 
+/* The placeholders every template has (template_vars.c), NULL-ended. */
+extern const struct tmpl_var tmpl_common[];
+
 /* Helpers for writers' placeholders. */
 const struct organ *tmpl_organ(const struct tmpl_ctx *);
 
