@@ -22,6 +22,7 @@
 #include "scene/cfgtext.h"
 #include "diag.h"
 #include "mem.h"
+#include "meshes/idtable.h"
 #include "meshes/mtl.h"
 #include "meshes/obj.h"
 #include "meshes/objtext.h"
@@ -34,82 +35,6 @@ static const char *const skipped[] = {
 	"trace_obj", "ctech", "stech", "call", "csh", "maplib", "usemap",
 	NULL
 };
-
-/*
- * A small open-addressed table from three numbers to an id: a vertex
- * is its (v, normal) pair, and a computed smooth normal its
- * (v, smoothing group).
- */
-struct slot {
-	uint64_t	 k[3];
-	uint32_t	 id;		/* UINT32_MAX: empty */
-};
-
-struct table {
-	struct slot	*slot;
-	size_t		 cap, n;		/* cap a power of two */
-};
-
-static uint64_t
-mix(uint64_t h)
-{
-	h ^= h >> 30;
-	h *= 0xbf58476d1ce4e5b9ULL;
-	h ^= h >> 27;
-	h *= 0x94d049bb133111ebULL;
-	return h ^ (h >> 31);
-}
-
-static void	table_put(struct table *, const uint64_t k[3], uint32_t id);
-
-static void
-table_grow(struct table *T)
-{
-	struct slot *old = T->slot;
-	size_t oldcap = T->cap;
-
-	T->cap = oldcap ? oldcap * 2 : 1024;
-	T->slot = xcalloc(T->cap, sizeof(*T->slot));
-	for (size_t i = 0; i < T->cap; i++)
-		T->slot[i].id = UINT32_MAX;
-	T->n = 0;
-	for (size_t i = 0; i < oldcap; i++)
-		if (old[i].id != UINT32_MAX)
-			table_put(T, old[i].k, old[i].id);
-	free(old);
-}
-
-static struct slot *
-table_find(const struct table *T, const uint64_t k[3])
-{
-	size_t i = (size_t)mix(k[0] ^ mix(k[1] ^ mix(k[2]))) & (T->cap - 1);
-
-	while (T->slot[i].id != UINT32_MAX && (T->slot[i].k[0] != k[0] ||
-	    T->slot[i].k[1] != k[1] || T->slot[i].k[2] != k[2]))
-		i = (i + 1) & (T->cap - 1);
-	return &T->slot[i];
-}
-
-static void
-table_put(struct table *T, const uint64_t k[3], uint32_t id)
-{
-	struct slot *s;
-
-	if (2 * (T->n + 1) > T->cap)
-		table_grow(T);
-	s = table_find(T, k);
-	if (s->id == UINT32_MAX)
-		T->n++;
-	memcpy(s->k, k, sizeof(s->k));
-	s->id = id;
-}
-
-/* k's id, or UINT32_MAX. */
-static uint32_t
-table_get(const struct table *T, const uint64_t k[3])
-{
-	return T->cap == 0 ? UINT32_MAX : table_find(T, k)->id;
-}
 
 /* Where a vertex's normal comes from: the key's third number. */
 #define NK_GIVEN	(0ULL << 62)	/* vn, its index */
@@ -135,12 +60,12 @@ struct obj {
 	obj_read_fn	*told;
 	double		(*v)[3], (*vn)[3];
 	size_t		 nv, nvt, nvn, capv, capvn;
-	struct table	 verts;		/* (v, 0, normal key): vertex */
+	struct idtab	 verts;		/* (v, 0, normal key): vertex */
 	uint64_t	(*vkey)[3];	/* each vertex's key */
 	size_t		 nvert, capvert;
 	double		(*flat)[3], (*smooth)[3];	/* computed normals */
 	size_t		 nflat, capflat, nsmooth, capsmooth;
-	struct table	 smooth_at;	/* (v, group, 0): its sum */
+	struct idtab	 smooth_at;	/* (v, group, 0): its sum */
 	unsigned long	 group;		/* smoothing group; 0 off */
 	struct group	*groups;
 	size_t		 ngroups, cur;
@@ -216,13 +141,13 @@ vertex(struct obj *O, const struct corner *c, uint64_t nk)
 	/* Texture coordinates are checked but not kept: no texture goes
 	 * into the file, and glTF-Validator calls unused ones out. */
 	uint64_t k[3] = { (uint64_t)c->v, 0, nk };
-	uint32_t id = table_get(&O->verts, k);
+	uint32_t id = idtab_get(&O->verts, k);
 
 	if (id != UINT32_MAX)
 		return id;
 	O->vkey = grow(O->vkey, O->nvert, &O->capvert, sizeof(*O->vkey));
 	memcpy(O->vkey[O->nvert], k, sizeof(k));
-	table_put(&O->verts, k, (uint32_t)O->nvert);
+	idtab_put(&O->verts, k, (uint32_t)O->nvert);
 	return (uint32_t)O->nvert++;
 }
 
@@ -231,14 +156,14 @@ static uint64_t
 smooth_key(struct obj *O, long v)
 {
 	uint64_t k[3] = { (uint64_t)v, O->group, 0 };
-	uint32_t id = table_get(&O->smooth_at, k);
+	uint32_t id = idtab_get(&O->smooth_at, k);
 
 	if (id == UINT32_MAX) {
 		O->smooth = grow(O->smooth, O->nsmooth, &O->capsmooth,
 		    sizeof(*O->smooth));
 		memset(O->smooth[O->nsmooth], 0, sizeof(*O->smooth));
 		id = (uint32_t)O->nsmooth++;
-		table_put(&O->smooth_at, k, id);
+		idtab_put(&O->smooth_at, k, id);
 	}
 	return NK_SMOOTH | id;
 }
@@ -557,11 +482,11 @@ obj_free(struct obj *O)
 	free(O->groups);
 	free(O->v);
 	free(O->vn);
-	free(O->verts.slot);
+	idtab_free(&O->verts);
 	free(O->vkey);
 	free(O->flat);
 	free(O->smooth);
-	free(O->smooth_at.slot);
+	idtab_free(&O->smooth_at);
 	free(O->corner);
 	free(O->mats);
 }
