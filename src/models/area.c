@@ -21,7 +21,7 @@
 #include "diag.h"
 #include "mem.h"
 #include "models/model.h"
-#include "analysis/parastichy.h"
+#include "analysis/design.h"
 #include "geometry/receptacle.h"
 
 enum { AR_RECEPTACLE, AR_RADIUS, AR_PARASTICHIES, AR__N };

@@ -27,7 +27,7 @@
 #include "diag.h"
 #include "mem.h"
 #include "models/model.h"
-#include "analysis/parastichy.h"
+#include "analysis/design.h"
 #include "geometry/receptacle.h"
 
 #define COUNT_DEFAULT	1000000	/* primordia when count is not given */

@@ -17,7 +17,7 @@
 #include "diag.h"
 #include "mem.h"
 #include "models/model.h"
-#include "analysis/parastichy.h"
+#include "analysis/design.h"
 
 enum { CY_RADIUS, CY_PARASTICHIES, CY_RISE, CY_LENGTH, CY__N };
 

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "models/model.h"
+#include "analysis/design.h"
 #include "analysis/parastichy.h"
 
 enum { PL_SCALE, PL_OUTER, PL_INNER, PL_EXPONENT, PL_DOME, PL_PARASTICHIES,
