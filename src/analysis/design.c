@@ -9,7 +9,9 @@
 
 #include "analysis/design.h"
 #include "analysis/parastichy.h"
-#include "scene/scene.h"
+#include "geometry/curve.h"
+#include "geometry/receptacle.h"
+#include "models/model.h"
 
 int
 para_gcd(int a, int b)
@@ -142,18 +144,18 @@ para_search(const int want[2], double lo, double hi, int grows,
 }
 
 int
-para_want_check(const struct scene *sc, int line, const char *path,
+para_want_check(const struct model_ctx *ctx, int line, const char *path,
     const struct int_list *want)
 {
 	int a;
 
 	if (want->n != 2 || want->v[0] >= want->v[1]) {
-		scene_error(sc, line, "%s must be a pair [m, n] with m < n",
+		model_error(ctx, line, "%s must be a pair [m, n] with m < n",
 		    path);
 		return -1;
 	}
 	if ((a = para_gcd(want->v[0], want->v[1])) != 1) {
-		scene_error(sc, line, "%s [%d, %d] have the common factor %d: "
+		model_error(ctx, line, "%s [%d, %d] have the common factor %d: "
 		    "a single spiral shows coprime numbers", path, want->v[0],
 		    want->v[1], a);
 		return -1;
@@ -163,7 +165,7 @@ para_want_check(const struct scene *sc, int line, const char *path,
 
 struct design {
 	para_place_fn	*place;
-	void		*ctx;
+	void		*arg;
 	long long	 cap;
 };
 
@@ -176,7 +178,7 @@ design_pair(void *ctx, double r, int pair[2])
 	struct para_zone z[64];
 	size_t nz;
 
-	if (D->place(D->ctx, r, D->cap, &res) != 0)
+	if (D->place(D->arg, r, D->cap, &res) != 0)
 		return -1;
 	nz = para_zones(&res, NULL, z, 64);
 	pair[0] = nz ? z[0].m : 0;
@@ -185,23 +187,28 @@ design_pair(void *ctx, double r, int pair[2])
 	return 0;
 }
 
-double
-para_design_radius(const struct scene *sc, int line, const char *path,
+/*
+ * The constant radius whose structure shows the pair want at its base,
+ * on a receptacle whose base circle has radius rim, searched up to rhi;
+ * want as given at path, line.  The radius, or -1 after a diagnostic.
+ */
+static double
+design_radius(const struct model_ctx *ctx, int line, const char *path,
     const struct int_list *want, double rim, double rhi,
-    para_place_fn *place, void *ctx)
+    para_place_fn *place, void *arg)
 {
 	/* Enough organs for the base to show its pair, and not many more. */
-	struct design D = { place, ctx, 12LL * (want->v[0] + want->v[1]) };
+	struct design D = { place, arg, 12LL * (want->v[0] + want->v[1]) };
 	char reach[512];
 	double r, est;
 
-	if (para_want_check(sc, line, path, want) != 0)
+	if (para_want_check(ctx, line, path, want) != 0)
 		return -1;
 	if (!(rim > 0)) {
 		/* At a pole the pair changes organ by organ: no base pair. */
-		scene_error(sc, line, "parastichies = [m, n] needs a receptacle "
-		    "with a rim at its base: at a pole the pair changes from "
-		    "one organ to the next");
+		model_error(ctx, line, "parastichies = [m, n] needs a "
+		    "receptacle with a rim at its base: at a pole the pair "
+		    "changes from one organ to the next");
 		return -1;
 	}
 	/*
@@ -215,10 +222,41 @@ para_design_radius(const struct scene *sc, int line, const char *path,
 		r = para_search(want->v, rhi / 200, rhi, 0, design_pair, &D,
 		    reach, sizeof(reach));
 	if (r == 0) {
-		scene_error(sc, line, "no constant radius shows parastichies "
+		model_error(ctx, line, "no constant radius shows parastichies "
 		    "%d/%d at the base of this receptacle; the radii tried "
 		    "show %s", want->v[0], want->v[1], reach);
 		return -1;
 	}
 	return r;
+}
+
+double
+para_design_receptacle(const struct model_ctx *ctx, const char *group,
+    int line, int radius_line, const struct receptacle *rc,
+    const struct int_list *want, int by_area, para_place_fn *place,
+    void *arg)
+{
+	char path[64];
+	double (*pts)[2], rim, rhi;
+	struct curve cv;
+	int npts;
+
+	if (radius_line) {
+		model_error(ctx, line, "give %s.radius or %s.parastichies, "
+		    "not both", group, group);
+		return -1;
+	}
+	if ((pts = receptacle_points(ctx->file, rc, &npts)) == NULL)
+		return -1;
+	rim = pts[0][0];
+	/* At most a radius whose cell fits four times round the base. */
+	rhi = rim * M_PI / 3;
+	/* And four times on the whole receptacle. */
+	if (by_area && curve_init(&cv, (const double (*)[2])pts, npts) == 0) {
+		rhi = fmin(rhi, sqrt(cv.area / (8 * sqrt(3.0))));
+		curve_free(&cv);
+	}
+	free(pts);
+	snprintf(path, sizeof(path), "%s.parastichies", group);
+	return design_radius(ctx, line, path, want, rim, rhi, place, arg);
 }

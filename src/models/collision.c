@@ -22,13 +22,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "models/collision_cover.h"
-#include "geometry/curve.h"
-#include "diag.h"
-#include "mem.h"
-#include "models/model.h"
 #include "analysis/design.h"
+#include "diag.h"
+#include "geometry/curve.h"
+#include "geometry/geometry.h"
 #include "geometry/receptacle.h"
+#include "mem.h"
+#include "models/collision.h"
+#include "models/collision_cover.h"
+#include "models/model.h"
 
 #define COUNT_DEFAULT	1000000	/* primordia when count is not given */
 #define COUNT_MOST	5000000	/* 180 bytes each: under 1 GiB */
@@ -39,8 +41,6 @@
 #define REFINE_FALL	0.03	/* of r: a proof for r lasts about so far */
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
 				   walk's steps vanish in double precision */
-
-void	(*model_progress)(long long done, int last);
 
 enum { CO_RECEPTACLE, CO_RADIUS, CO_EPSILON, CO_PARASTICHIES, CO__N };
 
@@ -91,7 +91,7 @@ struct slot {
 };
 
 struct coll {
-	const struct scene *sc;
+	const struct model_ctx *ctx;
 	const struct collision *p;
 	double		 rconst;	/* > 0: the radius, not P->radius */
 	struct curve	 cv;
@@ -747,20 +747,17 @@ static int
 radius_at(const struct coll *C, struct expr_env *env, long long n,
     long long N, double *r, double *eps)
 {
-	const struct scene *sc = C->sc;
+	const struct model_ctx *ctx = C->ctx;
 	const struct collision *P = C->p;
 
-	env->n = n;
-	env->var[V_N] = (double)n;
-	env->var[V_COUNT] = (double)N;
-	env->var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
+	expr_env_organ(env, n, N);
 	if (C->rconst > 0)
 		*r = C->rconst;
-	else if (scene_eval(sc, &P->radius, "collision.radius", "primordium",
+	else if (model_eval(ctx, &P->radius, "collision.radius", "primordium",
 	    env, r) != 0)
 		return -1;
 	if (!(*r > 0)) {
-		diag(ST_SCENE, sc->file, P->radius.line, 0,
+		diag(ST_SCENE, ctx->file, P->radius.line, 0,
 		    "collision.radius is %.9g at primordium %lld; it must be "
 		    "positive", *r, n);
 		return -1;
@@ -769,11 +766,11 @@ radius_at(const struct coll *C, struct expr_env *env, long long n,
 	if (P->epsilon.e == NULL)
 		return 0;
 	env->var[V_R] = *r;
-	if (scene_eval(sc, &P->epsilon, "collision.epsilon",
+	if (model_eval(ctx, &P->epsilon, "collision.epsilon",
 	    "primordium", env, eps) != 0)
 		return -1;
 	if (*eps < 0) {
-		diag(ST_SCENE, sc->file, P->epsilon.line, 0,
+		diag(ST_SCENE, ctx->file, P->epsilon.line, 0,
 		    "collision.epsilon is %.9g at primordium %lld; it must be "
 		    "at least 0", *eps, n);
 		return -1;
@@ -824,6 +821,7 @@ fill_result(const struct coll *C, double alpha, struct result *res)
 
 	result_init(res, C->n);
 	res->divergence = alpha;
+	res->svg = PROJ_TOP;
 	for (size_t i = 0; i < C->n; i++) {
 		const struct prim *o = &C->pr[i];
 		struct organ *g = &res->organs[i];
@@ -866,7 +864,7 @@ static void
 law_extent(struct coll *C, long long N, double r0, double *rmin,
     double *area)
 {
-	struct expr_env env = { { 0 }, (uint64_t)C->sc->seed, 0 };
+	struct expr_env env = { { 0 }, (uint64_t)C->ctx->seed, 0 };
 	long long step = N / LAW_SAMPLES + 1, samples = 0;
 	double sum = 0, r;
 
@@ -879,10 +877,7 @@ law_extent(struct coll *C, long long N, double r0, double *rmin,
 	C->nlaw = (size_t)((N + step - 1) / step);
 	C->law = xcalloc(C->nlaw, sizeof(*C->law));
 	for (long long n = 0; n < N; n += step) {
-		env.n = n;
-		env.var[V_N] = (double)n;
-		env.var[V_COUNT] = (double)N;
-		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
+		expr_env_organ(&env, n, N);
 		/* A radius the law cannot give: no fall to plan for. */
 		if (expr_eval(C->p->radius.e, &env, &r) != EXPR_OK ||
 		    !(r > 0)) {
@@ -945,43 +940,36 @@ grid_fit(struct coll *C, double r)
 
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
 static int
-place(const struct scene *sc, struct result *res, int how, double rconst,
-    long long cap)
+place(const struct model_ctx *ctx, struct result *res, int how,
+    double rconst, long long cap)
 {
 	int brute = how == PLACE_BRUTE;
-	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
-	const struct collision *P = sc->params;
-	struct coll C = { .sc = sc, .p = P, .nocover = how == PLACE_PLAIN ||
+	struct expr_env env = { { 0 }, (uint64_t)ctx->seed, 0 };
+	const struct collision *P = ctx->params;
+	struct coll C = { .ctx = ctx, .p = P, .nocover = how == PLACE_PLAIN ||
 	    how == PLACE_BRUTE, .check = how == PLACE_CHECK,
 	    .rconst = rconst };
-	double (*pts)[2], alpha = sc->divergence, r, eps, rmin, band, k;
+	double alpha = ctx->divergence, r, eps, rmin, band, k;
 	double a_next;
-	long long N = sc->given[S_COUNT] ? sc->count : COUNT_DEFAULT;
-	int npts, rc = -1, full = 0;
+	long long N = ctx->count_line ? ctx->count : COUNT_DEFAULT;
+	int rc = -1, full = 0;
 
 	if (cap > 0 && cap < N)
 		N = cap;
 
 	if (N > COUNT_MOST) {
-		scene_error(sc, sc->given[S_COUNT], "count %lld is more than "
+		model_error(ctx, ctx->count_line, "count %lld is more than "
 		    "the collision model places, %d", N, COUNT_MOST);
 		return -1;
 	}
 	if (P->radius.e == NULL && rconst <= 0) {
-		scene_error(sc, GIVEN_AT(P, CO_RADIUS), "missing setting "
+		model_error(ctx, GIVEN_AT(P, CO_RADIUS), "missing setting "
 		    "'collision.radius' (the primordia's radius, or "
 		    "collision.parastichies to have it found)");
 		return -1;
 	}
-	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
+	if (receptacle_curve(ctx->file, &P->receptacle, &C.cv) != 0)
 		return -1;
-	if (curve_init(&C.cv, (const double (*)[2])pts, npts) != 0) {
-		scene_error(sc, GIVEN_AT(&P->receptacle, RC_PROFILE),
-		    "the receptacle's profile has no length");
-		free(pts);
-		return -1;
-	}
-	free(pts);
 	if (radius_at(&C, &env, 0, N, &r, &eps) != 0)
 		goto out;
 	/* A constant radius is that for every primordium: no evaluating. */
@@ -989,7 +977,7 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 		C.rconst = r;
 	law_extent(&C, N, r, &rmin, &band);
 	if (rmin < R_SMALLEST * fmax(C.cv.length, C.cv.rho_max)) {
-		scene_error(sc, GIVEN_AT(P, CO_RADIUS), "collision.radius "
+		model_error(ctx, GIVEN_AT(P, CO_RADIUS), "collision.radius "
 		    "%.9g is too small for this receptacle: below %g of its "
 		    "size, %.9g, the placement cannot be resolved", rmin,
 		    R_SMALLEST, fmax(C.cv.length, C.cv.rho_max));
@@ -1053,14 +1041,14 @@ place(const struct scene *sc, struct result *res, int how, double rconst,
 				cover_floor(&C.cover, fmin(r, C.law_min[i]));
 		}
 		coll_add(&C, t, row, a, c, s, r, brute ? NULL : at);
-		if (model_progress != NULL && n % PROGRESS_EVERY == 0)
-			model_progress(n + 1, 0);
+		if (ctx->progress != NULL && n % PROGRESS_EVERY == 0)
+			ctx->progress(n + 1, 0);
 	}
 	full = (long long)C.n == N;
-	if (model_progress != NULL)
-		model_progress((long long)C.n, 1);
-	if (full && !sc->given[S_COUNT] && cap <= 0)
-		diag(ST_OK, sc->file, P->radius.line, 0, "stopped at %d "
+	if (ctx->progress != NULL)
+		ctx->progress((long long)C.n, 1);
+	if (full && !ctx->count_line && cap <= 0)
+		diag(ST_OK, ctx->file, P->radius.line, 0, "stopped at %d "
 		    "primordia, the default bound, with room left on the "
 		    "receptacle; set count to place more", COUNT_DEFAULT);
 	fill_result(&C, alpha, res);
@@ -1086,44 +1074,35 @@ out:
 }
 
 const struct receptacle *
-collision_receptacle(const struct scene *sc)
+collision_receptacle(const struct model_ctx *ctx)
 {
-	return &((const struct collision *)sc->params)->receptacle;
+	return &((const struct collision *)ctx->params)->receptacle;
 }
 
 int
-collision_place(const struct scene *sc, struct result *res, int how)
+collision_place(const struct model_ctx *ctx, struct result *res, int how)
 {
-	return place(sc, res, how, 0, 0);
+	return place(ctx, res, how, 0, 0);
 }
 
 static int
-trial_place(void *ctx, double r, long long cap, struct result *res)
+trial_place(void *arg, double r, long long cap, struct result *res)
 {
-	return place(ctx, res, PLACE_EXACT, r, cap);
+	return place(arg, res, PLACE_EXACT, r, cap);
 }
 
 static int
-collision_run(const struct scene *sc, const void *params, struct result *res)
+collision_run(const struct model_ctx *ctx, struct result *res)
 {
-	const struct collision *P = params;
-	int at = P->given[CO_PARASTICHIES], npts;
-	double (*pts)[2], rim, r;
+	const struct collision *P = ctx->params;
+	int at = P->given[CO_PARASTICHIES];
+	double r;
 
 	if (!at)
-		return collision_place(sc, res, PLACE_EXACT);
-	if (P->given[CO_RADIUS]) {
-		scene_error(sc, at, "give collision.radius or "
-		    "collision.parastichies, not both");
-		return -1;
-	}
-	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
-		return -1;
-	rim = pts[0][0];
-	free(pts);
-	r = para_design_radius(sc, at, "collision.parastichies",
-	    &P->parastichies, rim, rim * M_PI / 3, trial_place, (void *)sc);
-	if (r < 0 || place(sc, res, PLACE_EXACT, r, 0) != 0)
+		return collision_place(ctx, res, PLACE_EXACT);
+	r = para_design_receptacle(ctx, "collision", at, P->given[CO_RADIUS],
+	    &P->receptacle, &P->parastichies, 0, trial_place, (void *)ctx);
+	if (r < 0 || place(ctx, res, PLACE_EXACT, r, 0) != 0)
 		return -1;
 	result_info(res, "radius", 1, r);
 	return 0;
@@ -1136,5 +1115,4 @@ const struct model collision_model = {
 	.settings = &collision_table,
 	.size = sizeof(struct collision),
 	.run = collision_run,
-	.svg = PROJ_TOP,
 };

@@ -25,10 +25,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "diag.h"
-#include "mem.h"
-#include "models/model.h"
 #include "analysis/parastichy.h"
+#include "diag.h"
+#include "geometry/geometry.h"
+#include "mem.h"
+#include "models/inhibition.h"
+#include "models/model.h"
 
 enum { IN_GROWTH, IN_START, IN_TRANSIENT, IN_KERNEL, IN_EXPONENT, IN_RADII,
 	IN_OUTER, IN_DOME, IN__N };
@@ -1140,24 +1142,20 @@ transient_for(double G)
 }
 
 int
-inhibition_place(const struct scene *sc, struct result *res, int how)
+inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 {
-	const struct inhibition *P = sc->params;
+	const struct inhibition *P = ctx->params;
 	struct field F = { .P = P, .hs = P->exponent / 2 };
-	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
+	struct expr_env env = { { 0 }, (uint64_t)ctx->seed, 0 };
 	size_t N;
-	double mean, spread, flip = 1, rim, kdome, scale, gmin, *born, T;
+	double mean, spread, flip = 1, rim, scale, gmin, *born, T;
 	struct cut *cuts;
 	size_t terms = 0;
 	struct gap *gaps;
 
-	if (!sc->given[S_COUNT]) {
-		scene_error(sc, 1, "missing setting 'count'");
-		return -1;
-	}
-	N = (size_t)sc->count;
+	N = (size_t)ctx->count;
 	if (P->kernel == K_GAUSSIAN && N > 200000) {
-		scene_error(sc, GIVEN_AT(P, IN_KERNEL), "count %zu is more "
+		model_error(ctx, GIVEN_AT(P, IN_KERNEL), "count %zu is more "
 		    "than the gaussian kernel places, 200000: it weighs every "
 		    "primordium, so each costs as many as came before", N);
 		return -1;
@@ -1167,11 +1165,8 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	for (size_t n = 1; n <= N; n++) {
 		double g = 0.02;
 
-		env.n = (long long)n;
-		env.var[V_N] = (double)n;
-		env.var[V_COUNT] = (double)N;
-		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
-		if (P->growth.e != NULL && scene_eval(sc, &P->growth,
+		expr_env_organ(&env, (long long)n, (long long)N);
+		if (P->growth.e != NULL && model_eval(ctx, &P->growth,
 		    "inhibition.growth", "primordium", &env, &g) != 0) {
 			free(F.S);
 			return -1;
@@ -1183,7 +1178,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		 * hundred at the usual G; the tests check down to 0.0005.
 		 */
 		if (!(g >= GROWTH_MIN) || g > 100) {
-			diag(ST_SCENE, sc->file, P->growth.line, 0,
+			diag(ST_SCENE, ctx->file, P->growth.line, 0,
 			    "inhibition.growth is %.9g at primordium %zu; it "
 			    "must be between %g and 100", g, n, GROWTH_MIN);
 			free(F.S);
@@ -1212,7 +1207,7 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		gmin = fmin(gmin, g);
 	}
 	if (F.S[N - 1] > AGE_MAX) {
-		scene_error(sc, GIVEN_AT(P, IN_GROWTH), "inhibition.growth "
+		model_error(ctx, GIVEN_AT(P, IN_GROWTH), "inhibition.growth "
 		    "adds up to %.0f over %zu primordia: the oldest would be "
 		    "e^%.0f meristem radii out; the sum must stay under %d",
 		    F.S[N - 1], N, F.S[N - 1], AGE_MAX);
@@ -1273,11 +1268,11 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 			terms = n - F.from;
 		field_add(&F, n == 0 ? 0 : n == 1 ? M_PI : next_angle(&F,
 		    cuts, gaps));
-		if (model_progress != NULL && n % 16384 == 0 && n > 0)
-			model_progress((long long)n, 0);
+		if (ctx->progress != NULL && n % 16384 == 0 && n > 0)
+			ctx->progress((long long)n, 0);
 	}
-	if (model_progress != NULL)
-		model_progress((long long)N, 1);
+	if (ctx->progress != NULL)
+		ctx->progress((long long)N, 1);
 	settled(F.phi, N, &mean, &spread);
 	/* Turn the spiral counter-clockwise, as a positive divergence does. */
 	if (N > 2) {
@@ -1304,10 +1299,10 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 	scale = P->given[IN_OUTER] || P->radii == RADII_VOGEL ?
 	    P->outer / rim : 1;
 	rim *= scale;
-	kdome = rim > 0 ? 2 * P->dome / (rim * rim) : 0;
 
 	result_init(res, N);
 	res->divergence = mean;
+	res->svg = PROJ_TOP;
 	for (size_t i = 0; i < N; i++) {
 		struct organ *o = &res->organs[i];
 		/* The newest is at the edge, the oldest N - 1 plastochrons out. */
@@ -1315,12 +1310,10 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 		    sqrt((double)(N - 1 - i) + 0.5) :
 		    R0 * exp(F.S[N - 1] - F.S[i])) * scale;
 		double phi = remainder(flip * F.phi[i], 2 * M_PI) * (180 / M_PI);
-		double z = rim > 0 ? P->dome * (1 - (rho / rim) * (rho / rim)) :
-		    P->dome;
 
 		if (phi < 0)
 			phi += 360;
-		frame_revolution(o, phi, rho, z, 1, -kdome * rho);
+		frame_dome(o, phi, rho, rim, P->dome);
 	}
 	contact_radii(res);
 	/* Rays only where every angle is the same (alternate leaves). */
@@ -1356,11 +1349,9 @@ inhibition_place(const struct scene *sc, struct result *res, int how)
 }
 
 static int
-inhibition_run(const struct scene *sc, const void *params,
-    struct result *res)
+inhibition_run(const struct model_ctx *ctx, struct result *res)
 {
-	(void)params;		/* inhibition_place finds them in sc */
-	return inhibition_place(sc, res, 0);
+	return inhibition_place(ctx, res, 0);
 }
 
 const struct model inhibition_model = {
@@ -1370,6 +1361,6 @@ const struct model inhibition_model = {
 	.settings = &inhibition_table,
 	.size = sizeof(struct inhibition),
 	.run = inhibition_run,
-	.svg = PROJ_TOP,
+	.needs_count = 1,
 	.emerges = 1,
 };
