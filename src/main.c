@@ -353,17 +353,15 @@ main(int argc, char *argv[])
 	st = parse_args(argc, argv, &a);
 	if (st < 0 && fflush(stdout) != 0)	/* --help, --version */
 		diag(ST_SYSTEM, "<stdout>", 0, 0, "%s", strerror(errno));
-	if (st == 0 && isatty(STDERR_FILENO)) {
+	if (st == 0 && isatty(STDERR_FILENO))
 		progress_start();
-		model_progress = progress_placed;
-	}
 	if (st == 0 && (a.writer->tmpl == NULL ||
 	    (t = load_template(&a, path, sizeof(path))) != NULL)) {
 		struct job j = { a.writer, t, path[0] ? path : NULL, a.scene,
 		    a.output, (a.objects ? TO_OBJECTS : 0) |
 		    (a.flatten ? TO_FLATTEN : 0), a.frames, a.set, a.nset,
 		    a.max_output, isatty(STDERR_FILENO) ? progress_written :
-		    NULL };
+		    NULL, isatty(STDERR_FILENO) ? progress_placed : NULL };
 
 		run(&j);
 		progress_clear();

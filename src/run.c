@@ -59,7 +59,7 @@ make(const struct job *j, int F, struct made *m)
 	}
 	m->p = (struct plan){ NULL, 0, NULL, 0 };
 	rc = compound_load(&m->c, j->scene, &ld, j->writer->check) != 0 ? -1 :
-	    compound_run(&m->c, j->frames ? &fr : NULL);
+	    compound_run(&m->c, j->frames ? &fr : NULL, j->placed);
 	diag_context(NULL);
 	/*
 	 * The meshes are the same in every frame, so their messages name

@@ -23,6 +23,8 @@ struct job {
 	double		 max_output;	/* bytes; 0: no limit */
 	/* Told as blocks are written: used of about expected. */
 	void		(*told)(const struct budget *);
+	/* Told as a model places: how many so far, and last at the end. */
+	void		(*placed)(long long done, int last);
 };
 
 /*

@@ -25,7 +25,7 @@ best(const char *text, size_t *count)
 		if (scene_load_buffer(&sc, "bench.cfg", text, strlen(text)) != 0)
 			return -1;
 		t0 = now();
-		if (model_run(&sc, &res) != 0) {
+		if (scene_run(&sc, &res, NULL) != 0) {
 			scene_free(&sc);
 			return -1;
 		}

@@ -11,6 +11,7 @@
 #include <sys/resource.h>
 #include <time.h>
 
+#include "models/collision.h"
 #include "models/model.h"
 #include "scene/scene.h"
 #include "clock.h"
@@ -21,6 +22,7 @@ run(double r, long long bound, int how, size_t *placed)
 {
 	char text[512];
 	struct scene sc;
+	struct model_ctx ctx;
 	struct result res = { 0 };
 	double t0, t1;
 
@@ -29,8 +31,9 @@ run(double r, long long bound, int how, size_t *placed)
 	    "radius = %.9g; };\n", bound, r);
 	if (scene_load_buffer(&sc, "bench.cfg", text, strlen(text)) != 0)
 		return -1;
+	scene_model_ctx(&sc, &ctx, NULL);
 	t0 = now();
-	if (collision_place(&sc, &res, how) != 0)
+	if (collision_place(&ctx, &res, how) != 0)
 		return -1;
 	t1 = now();
 	*placed = res.count;

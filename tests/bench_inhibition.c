@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "models/inhibition.h"
 #include "models/model.h"
 #include "scene/scene.h"
 #include "clock.h"
@@ -20,6 +21,7 @@ run(long count, double G, int all_pairs, double *settled, int dense)
 {
 	char text[256];
 	struct scene sc;
+	struct model_ctx ctx;
 	struct result res = { 0 };
 	double t0, t;
 
@@ -27,8 +29,10 @@ run(long count, double G, int all_pairs, double *settled, int dense)
 	    "inhibition = { growth = %.9g; radii = \"grown\"; };\n", count, G);
 	if (scene_load_buffer(&sc, "bench.cfg", text, strlen(text)) != 0)
 		return -1;
+	scene_model_ctx(&sc, &ctx, NULL);
 	t0 = now();
-	if (inhibition_place(&sc, &res, all_pairs ? INHIB_ALL_PAIRS : 0) != 0) {
+	if (inhibition_place(&ctx, &res, all_pairs ? INHIB_ALL_PAIRS : 0) !=
+	    0) {
 		scene_free(&sc);
 		return -1;
 	}

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "clock.h"
+#include "models/collision.h"
 #include "models/model.h"
 #include "scene/scene.h"
 
@@ -69,6 +70,7 @@ timed(const char *shape, const char *law, const char *eps, double r,
 		return -1;
 	if (pid == 0) {
 		struct scene sc;
+		struct model_ctx ctx;
 		struct result res = { 0 };
 		struct rusage ru;
 		double t0, t1, out[3];
@@ -77,8 +79,9 @@ timed(const char *shape, const char *law, const char *eps, double r,
 		alarm(LIMIT);
 		if (scene_load_buffer(&sc, "matrix.cfg", text, strlen(text)) != 0)
 			_exit(1);
+		scene_model_ctx(&sc, &ctx, NULL);
 		t0 = now();
-		if (collision_place(&sc, &res, PLACE_EXACT) != 0)
+		if (collision_place(&ctx, &res, PLACE_EXACT) != 0)
 			_exit(1);
 		t1 = now();
 		getrusage(RUSAGE_SELF, &ru);

@@ -42,7 +42,7 @@ main(int argc, char **argv)
 		    strlen(argv[1])) != 0)
 			return 1;
 		t0 = now();
-		if (model_run(&sc, &res) != 0)
+		if (scene_run(&sc, &res, NULL) != 0)
 			return 1;
 		t1 = now();
 		nz = para_zones(&res, NULL, z, 64);

@@ -35,7 +35,7 @@ run(const char *cfg, struct scene *sc, struct result *res)
 	snprintf(text, sizeof(text), "model = \"area\";\n%s\n", cfg);
 	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
 		return -1;
-	return model_run(sc, res);
+	return scene_run(sc, res, NULL);
 }
 
 static double

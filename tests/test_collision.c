@@ -18,6 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geometry/geometry.h"
+#include "models/collision.h"
 #include "models/model.h"
 #include "geometry/receptacle.h"
 #include "scene/scene.h"
@@ -116,6 +118,25 @@ curve_dist(const double (*b)[2], int npts, double rho, double z)
 	return best;
 }
 
+/* The model's hooks take what the model sees of sc. */
+static int
+place(const struct scene *sc, struct result *res, int how)
+{
+	struct model_ctx ctx;
+
+	scene_model_ctx(sc, &ctx, NULL);
+	return collision_place(&ctx, res, how);
+}
+
+/* The receptacle's control points. */
+static double (*points(const struct scene *sc, int *n))[2]
+{
+	struct model_ctx ctx;
+
+	scene_model_ctx(sc, &ctx, NULL);
+	return receptacle_points(sc->file, collision_receptacle(&ctx), n);
+}
+
 static void
 properties(const char *what, const struct scene *sc, const struct result *res,
     int touching)
@@ -125,7 +146,7 @@ properties(const char *what, const struct scene *sc, const struct result *res,
 	double worst_touch = 0, (*b)[2];
 	int npts;
 
-	b = receptacle_points(sc, collision_receptacle(sc), &npts);
+	b = points(sc, &npts);
 	for (size_t i = 0; i < res->count; i++) {
 		double rho = hypot(o[i].pos[0], o[i].pos[1]), nearest = HUGE_VAL;
 
@@ -175,7 +196,7 @@ agreement(const char *what, const struct scene *sc, const struct result *x)
 	double worst = 0;
 	size_t first = 0;
 
-	if (collision_place(sc, &br, PLACE_BRUTE) != 0) {
+	if (place(sc, &br, PLACE_BRUTE) != 0) {
 		check(0, "%s: brute-force reference runs", what);
 		return;
 	}
@@ -252,8 +273,8 @@ cover_agrees(void)
 		double worst = 0;
 
 		if (load(&sc, large[i].cfg) != 0 ||
-		    collision_place(&sc, &a, PLACE_CHECK) != 0 ||
-		    collision_place(&sc, &b, PLACE_PLAIN) != 0) {
+		    place(&sc, &a, PLACE_CHECK) != 0 ||
+		    place(&sc, &b, PLACE_PLAIN) != 0) {
 			check(0, "%s: scene loads and runs", large[i].what);
 			scene_free(&sc);
 			continue;
@@ -352,9 +373,8 @@ presets(void)
 		    "shape = \"%s\"; radius = %.17g; %s%.17g%s }; radius = "
 		    "0.05; }; count = 200;", shape, PR, shapes[i].height ?
 		    "height = " : "/* ", PH, shapes[i].height ? ";" : " */");
-		if (load(&sc, cfg) != 0 || collision_place(&sc, &res,
-		    PLACE_EXACT) != 0 || (b = receptacle_points(&sc,
-		    collision_receptacle(&sc), &n)) == NULL) {
+		if (load(&sc, cfg) != 0 || place(&sc, &res, PLACE_EXACT) != 0 ||
+		    (b = points(&sc, &n)) == NULL) {
 			check(0, "preset %s: loads and runs", shape);
 			scene_free(&sc);
 			continue;
@@ -401,7 +421,7 @@ main(void)
 		struct result res = { 0 };
 
 		if (load(&sc, cases[i].cfg) != 0 ||
-		    collision_place(&sc, &res, PLACE_EXACT) != 0) {
+		    place(&sc, &res, PLACE_EXACT) != 0) {
 			check(0, "%s: scene loads and runs", cases[i].what);
 			scene_free(&sc);
 			continue;

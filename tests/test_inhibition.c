@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "models/inhibition.h"
 #include "models/model.h"
 #include "analysis/parastichy.h"
 #include "scene/scene.h"
@@ -37,7 +38,7 @@ run(const char *cfg, struct scene *sc, struct result *res)
 	*res = (struct result){0};
 	if (load(cfg, sc) != 0)
 		return -1;
-	return model_run(sc, res);
+	return scene_run(sc, res, NULL);
 }
 
 static void
@@ -126,11 +127,16 @@ static void
 bounds(const char *what, const char *cfg)
 {
 	struct scene sc;
+	struct model_ctx ctx;
 	struct result res = { 0 };
 	double misses;
+	int rc = load(cfg, &sc);
 
-	if (load(cfg, &sc) != 0 ||
-	    inhibition_place(&sc, &res, INHIB_CHECK_BOUNDS) != 0) {
+	if (rc == 0) {
+		scene_model_ctx(&sc, &ctx, NULL);
+		rc = inhibition_place(&ctx, &res, INHIB_CHECK_BOUNDS);
+	}
+	if (rc != 0) {
 		check(0, "%s: runs", what);
 		scene_free(&sc);
 		return;

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geometry/geometry.h"
 #include "models/model.h"
 #include "analysis/parastichy.h"
 #include "writers/numfmt.h"
@@ -111,7 +112,7 @@ run(const char *text, struct scene *sc, struct result *res)
 	*res = (struct result){0};
 	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
 		return -1;
-	return model_run(sc, res);
+	return scene_run(sc, res, NULL);
 }
 
 static void

@@ -45,42 +45,4 @@ size_t	para_zones(const struct result *, const int (*pair)[2],
 /* Writes "transition 47/60 21/42" for a transition's zone; its length. */
 int	para_seen_text(const struct para_zone *, char *, size_t);
 
-/* Measure the pair at the rim or base with the parameter at x; 0 or -1. */
-typedef int para_measure_fn(void *ctx, double x, int pair[2]);
-
-/*
- * Inverse design: the x in [lo, hi] (lo > 0) whose structure shows the
- * pair want, searched in log x: stepped to find where want shows, then
- * each edge of that stretch bracketed, and the geometric middle taken.
- * grows: the pair grows with x (a count) rather than shrinks (a radius).
- * Returns x, 0 when want does not show (reach then lists the pairs that
- * did, "2/3 3/5 5/8"), or -1 when measure failed (it said why).
- */
-double	para_search(const int want[2], double lo, double hi, int grows,
-	    para_measure_fn *, void *ctx, char *reach, size_t reachsz);
-
-struct scene;
-struct int_list;
-
-/* Make the structure with a constant radius r, at most cap organs. */
-typedef int para_place_fn(void *ctx, double r, long long cap,
-    struct result *);
-
-/*
- * Inverse design of a radius: the constant radius whose structure shows
- * the pair want at its base, on a receptacle whose base circle has
- * radius rim, searched up to rhi; want as given at path, line.  The
- * radius, or -1 after a diagnostic.
- */
-double	para_design_radius(const struct scene *, int line, const char *path,
-	    const struct int_list *want, double rim, double rhi,
-	    para_place_fn *, void *ctx);
-
-/* The greatest common divisor of a, b >= 0: pairs are coprime. */
-int	para_gcd(int a, int b);
-
-/* A pair asked for at path, given at line: [m, n], 0 < m < n, coprime. */
-int	para_want_check(const struct scene *, int line, const char *path,
-	    const struct int_list *);
-
 #endif

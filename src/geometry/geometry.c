@@ -2,7 +2,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "models/model.h"
+#include "geometry/geometry.h"
 #include "geometry/vec.h"
 
 /*
@@ -54,6 +54,16 @@ frame_revolution_cs(struct organ *o, double phi, double c, double s,
 	o->w[0] = -t_z * c;
 	o->w[1] = -t_z * s;
 	o->w[2] = t_rho;
+}
+
+void
+frame_dome(struct organ *o, double phi, double rho, double rim, double dome)
+{
+	/* dz/drho = -kdome rho: away from the tip is outward, (1, dz/drho). */
+	double kdome = rim > 0 ? 2 * dome / (rim * rim) : 0;
+	double z = rim > 0 ? dome * (1 - (rho / rim) * (rho / rim)) : dome;
+
+	frame_revolution(o, phi, rho, z, 1, -kdome * rho);
 }
 
 /*

@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "diag.h"
+#include "geometry/curve.h"
 #include "mem.h"
 #include "geometry/receptacle.h"
 
@@ -132,7 +134,7 @@ default_height(int shape, double R)
 	}
 }
 
-static double (*preset(const struct scene *sc, const struct receptacle *rc,
+static double (*preset(const char *file, const struct receptacle *rc,
     int *n))[2]
 {
 	double R = rc->radius, H;
@@ -140,8 +142,8 @@ static double (*preset(const struct scene *sc, const struct receptacle *rc,
 
 	if (rc->given[RC_HEIGHT] && (shape == SHAPE_DISK ||
 	    shape == SHAPE_HEMISPHERE || shape == SHAPE_SPHERE)) {
-		scene_error(sc, rc->given[RC_HEIGHT], "shape \"%s\" has no "
-		    "height of its own; give only its radius",
+		diag(ST_SCENE, file, rc->given[RC_HEIGHT], 0, "shape \"%s\" "
+		    "has no height of its own; give only its radius",
 		    shape_names[shape]);
 		return NULL;
 	}
@@ -165,7 +167,7 @@ static double (*preset(const struct scene *sc, const struct receptacle *rc,
 	return NULL;
 }
 
-double (*receptacle_points(const struct scene *sc,
+double (*receptacle_points(const char *file,
     const struct receptacle *rc, int *n))[2]
 {
 	const struct point_list *pl = &rc->profile;
@@ -175,27 +177,47 @@ double (*receptacle_points(const struct scene *sc,
 	double (*p)[2];
 
 	if (have_profile == have_shape) {
-		scene_error(sc, have_profile ? rc->given[RC_SHAPE] :
-		    GIVEN_AT(rc, RC_SHAPE), "give %s.profile or %s.shape, %s",
-		    at, at, have_profile ? "not both" : "one of them");
+		diag(ST_SCENE, file, have_profile ? rc->given[RC_SHAPE] :
+		    GIVEN_AT(rc, RC_SHAPE), 0, "give %s.profile or %s.shape, "
+		    "%s", at, at, have_profile ? "not both" : "one of them");
 		return NULL;
 	}
 	if (have_shape)
-		return preset(sc, rc, n);
+		return preset(file, rc, n);
 	if (rc->given[RC_RADIUS] || rc->given[RC_HEIGHT]) {
-		scene_error(sc, rc->given[RC_RADIUS] ? rc->given[RC_RADIUS] :
-		    rc->given[RC_HEIGHT], "%s.radius and height size a preset "
-		    "shape; a profile has its own coordinates", at);
+		diag(ST_SCENE, file, rc->given[RC_RADIUS] ?
+		    rc->given[RC_RADIUS] : rc->given[RC_HEIGHT], 0,
+		    "%s.radius and height size a preset shape; a profile has "
+		    "its own coordinates", at);
 		return NULL;
 	}
 	if (pl->n < 4 || (pl->n - 1) % 3 != 0) {
-		scene_error(sc, rc->given[RC_PROFILE], "the profile has %d "
-		    "point%s; cubic Bezier segments joined end to end take "
-		    "3k+1 (4, 7, 10, ...)", pl->n, pl->n == 1 ? "" : "s");
+		diag(ST_SCENE, file, rc->given[RC_PROFILE], 0, "the profile "
+		    "has %d point%s; cubic Bezier segments joined end to end "
+		    "take 3k+1 (4, 7, 10, ...)", pl->n, pl->n == 1 ? "" : "s");
 		return NULL;
 	}
 	p = xcalloc((size_t)pl->n, sizeof(*p));
 	memcpy(p, pl->p, (size_t)pl->n * sizeof(*p));
 	*n = pl->n;
 	return p;
+}
+
+int
+receptacle_curve(const char *file, const struct receptacle *rc,
+    struct curve *cv)
+{
+	double (*pts)[2];
+	int npts;
+
+	if ((pts = receptacle_points(file, rc, &npts)) == NULL)
+		return -1;
+	if (curve_init(cv, (const double (*)[2])pts, npts) != 0) {
+		diag(ST_SCENE, file, GIVEN_AT(rc, RC_PROFILE), 0,
+		    "the receptacle's profile has no length");
+		free(pts);
+		return -1;
+	}
+	free(pts);
+	return 0;
 }

@@ -6,7 +6,6 @@
 #ifndef RECEPTACLE_H
 #define RECEPTACLE_H
 
-#include "scene/scene.h"
 #include "scene/settings.h"
 
 /* The presets (receptacle.shape). */
@@ -36,9 +35,19 @@ extern const struct table receptacle_table;
 
 /*
  * 3k+1 (radius, height) points, base first, owned by the caller; NULL
- * after a diagnostic naming the settings as the scene file wrote them.
+ * after a diagnostic naming the settings as the scene file (file) wrote
+ * them.
  */
-double	(*receptacle_points(const struct scene *, const struct receptacle *,
+double	(*receptacle_points(const char *file, const struct receptacle *,
 	    int *n))[2];
+
+struct curve;
+
+/*
+ * The same made the curve cv (curve.h), to be freed with curve_free();
+ * 0, or -1 after a diagnostic.
+ */
+int	receptacle_curve(const char *file, const struct receptacle *,
+	    struct curve *cv);
 
 #endif

@@ -17,12 +17,13 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "geometry/curve.h"
+#include "analysis/design.h"
 #include "diag.h"
+#include "geometry/curve.h"
+#include "geometry/geometry.h"
+#include "geometry/receptacle.h"
 #include "mem.h"
 #include "models/model.h"
-#include "analysis/parastichy.h"
-#include "geometry/receptacle.h"
 
 enum { AR_RECEPTACLE, AR_RADIUS, AR_PARASTICHIES, AR__N };
 
@@ -63,21 +64,21 @@ struct share {
 
 /* Radius mode: organ after organ until the next cell would not fit. */
 static struct share *
-shares_by_radius(const struct scene *sc, const struct area *P,
+shares_by_radius(const struct model_ctx *ctx, const struct area *P,
     double total, double rconst, long long most, size_t *count)
 {
-	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
-	long long N = sc->given[S_COUNT] ? sc->count : COUNT_MAX;
-	int capped = sc->given[S_COUNT] || most > 0;
+	struct expr_env env = { { 0 }, (uint64_t)ctx->seed, 0 };
+	long long N = ctx->count_line ? ctx->count : COUNT_MAX;
+	int capped = ctx->count_line || most > 0;
 	size_t n = 0, cap = 4096;
 	struct share *sh = xcalloc(cap, sizeof(*sh));
 	double used = 0;
 
 	if (most > 0 && most < N)
 		N = most;
-	if (rconst <= 0 && !sc->given[S_COUNT] && (expr_vars(P->radius.e) &
+	if (rconst <= 0 && !ctx->count_line && (expr_vars(P->radius.e) &
 	    (EXPR_VAR(V_COUNT) | EXPR_VAR(V_T)))) {
-		scene_error(sc, P->radius.line, "area.radius uses N or t, "
+		model_error(ctx, P->radius.line, "area.radius uses N or t, "
 		    "which need count: without it the surface decides how "
 		    "many organs there are");
 		free(sh);
@@ -92,8 +93,8 @@ shares_by_radius(const struct scene *sc, const struct area *P,
 		else if (!expr_is_constant(P->radius.e, &r0))
 			r0 = 0;
 		if (!capped && r0 > 0 && total / CELL(r0) > COUNT_MAX) {
-			scene_error(sc, P->radius.line, "area.radius %.9g is so "
-			    "small that the receptacle holds more than %d "
+			model_error(ctx, P->radius.line, "area.radius %.9g is "
+			    "so small that the receptacle holds more than %d "
 			    "organs; make it larger or set count", r0,
 			    COUNT_MAX);
 			free(sh);
@@ -106,34 +107,33 @@ shares_by_radius(const struct scene *sc, const struct area *P,
 		if ((long long)n == N) {
 			if (capped)
 				break;
-			scene_error(sc, P->radius.line, "area.radius is so "
+			model_error(ctx, P->radius.line, "area.radius is so "
 			    "small that the receptacle holds more than %d "
 			    "organs; make it larger or set count", COUNT_MAX);
 			free(sh);
 			return NULL;
 		}
-		env.n = (long long)n;
-		env.var[V_N] = (double)n;
-		env.var[V_COUNT] = (double)N;
-		env.var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
+		expr_env_organ(&env, (long long)n, N);
 		if (rconst > 0)
 			r = rconst;
-		else if (scene_eval(sc, &P->radius, "area.radius", "organ", &env,
-		    &r) != 0) {
+		else if (model_eval(ctx, &P->radius, "area.radius", "organ",
+		    &env, &r) != 0) {
 			free(sh);
 			return NULL;
 		}
 		if (!(r > 0)) {
-			diag(ST_SCENE, sc->file, P->radius.line, 0, "area.radius "
-			    "is %.9g at organ %zu; it must be positive", r, n);
+			diag(ST_SCENE, ctx->file, P->radius.line, 0,
+			    "area.radius is %.9g at organ %zu; it must be "
+			    "positive", r, n);
 			free(sh);
 			return NULL;
 		}
 		cell = CELL(r);
 		if (used + cell > total * (1 + 1e-12) && n == 0) {
-			diag(ST_SCENE, sc->file, P->radius.line, 0, "area.radius "
-			    "%.9g is too large: one organ's cell, %.9g, is more "
-			    "than the receptacle's area, %.9g", r, cell, total);
+			diag(ST_SCENE, ctx->file, P->radius.line, 0,
+			    "area.radius %.9g is too large: one organ's cell, "
+			    "%.9g, is more than the receptacle's area, %.9g", r,
+			    cell, total);
 			free(sh);
 			return NULL;
 		}
@@ -171,58 +171,51 @@ place(const struct curve *cv, double a, size_t *hint, double phi,
 }
 
 static int
-place_area(const struct scene *sc, const struct area *P, struct result *res,
-    double rconst, long long cap)
+place_area(const struct model_ctx *ctx, const struct area *P,
+    struct result *res, double rconst, long long cap)
 {
 	struct curve cv;
 	struct share *sh = NULL;
-	double (*pts)[2], rmin = HUGE_VAL, rmax = 0, r_even = 0;
+	double rmin = HUGE_VAL, rmax = 0, r_even = 0;
 	size_t count = 0, hint = 0;
-	int npts;
 
-	if (!P->given[AR_RADIUS] && rconst <= 0 && !sc->given[S_COUNT]) {
-		scene_error(sc, GIVEN_AT(P, AR_RADIUS), "give count (organs "
+	if (!P->given[AR_RADIUS] && rconst <= 0 && !ctx->count_line) {
+		model_error(ctx, GIVEN_AT(P, AR_RADIUS), "give count (organs "
 		    "spread evenly), area.radius (each organ's own size), or "
 		    "both");
 		return -1;
 	}
-	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
+	if (receptacle_curve(ctx->file, &P->receptacle, &cv) != 0)
 		return -1;
-	if (curve_init(&cv, (const double (*)[2])pts, npts) != 0) {
-		scene_error(sc, GIVEN_AT(&P->receptacle, RC_PROFILE),
-		    "the receptacle's profile has no length");
-		free(pts);
-		return -1;
-	}
-	free(pts);
 	if (!(cv.area > 0)) {
-		scene_error(sc, GIVEN_AT(&P->receptacle, RC_PROFILE),
+		model_error(ctx, GIVEN_AT(&P->receptacle, RC_PROFILE),
 		    "the receptacle has no area: its profile lies on the "
 		    "axis");
 		curve_free(&cv);
 		return -1;
 	}
 	if (P->given[AR_RADIUS] || rconst > 0) {
-		if ((sh = shares_by_radius(sc, P, cv.area, rconst, cap,
+		if ((sh = shares_by_radius(ctx, P, cv.area, rconst, cap,
 		    &count)) == NULL) {
 			curve_free(&cv);
 			return -1;
 		}
 	} else {
-		count = (size_t)sc->count;
+		count = (size_t)ctx->count;
 		/* N organs of hexagonal packing share the area. */
 		r_even = sqrt(cv.area / (2 * sqrt(3.0) * (double)count));
 	}
 
 	result_init(res, count);
-	res->divergence = sc->divergence;
+	res->divergence = ctx->divergence;
+	res->svg = PROJ_TOP;
 	for (size_t n = 0; n < count; n++) {
 		struct organ *o = &res->organs[n];
 		double mark = sh != NULL ? sh[n].mark :
 		    cv.area * ((double)n + 0.5) / (double)count;
 
 		place(&cv, mark, &hint, angle_mod360((double)n,
-		    sc->divergence), o);
+		    ctx->divergence), o);
 		o->radius = sh != NULL ? sh[n].r : r_even;
 		o->scale = o->radius;
 		if (o->radius < rmin)
@@ -241,48 +234,32 @@ place_area(const struct scene *sc, const struct area *P, struct result *res,
 }
 
 struct trial {
-	const struct scene *sc;
+	const struct model_ctx *ctx;
 	const struct area *P;
 };
 
 static int
-trial_place(void *ctx, double r, long long cap, struct result *res)
+trial_place(void *arg, double r, long long cap, struct result *res)
 {
-	const struct trial *T = ctx;
+	const struct trial *T = arg;
 
-	return place_area(T->sc, T->P, res, r, cap);
+	return place_area(T->ctx, T->P, res, r, cap);
 }
 
 static int
-area_run(const struct scene *sc, const void *params, struct result *res)
+area_run(const struct model_ctx *ctx, struct result *res)
 {
-	const struct area *P = params;
-	struct trial T = { sc, P };
-	int at = P->given[AR_PARASTICHIES], npts;
-	double (*pts)[2], rim, rhi, r;
-	struct curve cv;
+	const struct area *P = ctx->params;
+	struct trial T = { ctx, P };
+	int at = P->given[AR_PARASTICHIES];
+	double r;
 
 	if (!at)
-		return place_area(sc, P, res, 0, 0);
-	if (P->given[AR_RADIUS]) {
-		scene_error(sc, at, "give area.radius or area.parastichies, "
-		    "not both");
-		return -1;
-	}
-	if ((pts = receptacle_points(sc, &P->receptacle, &npts)) == NULL)
-		return -1;
-	rim = pts[0][0];
-	/* At most a radius whose cell fits four times. */
-	rhi = rim * M_PI / 3;
-	if (curve_init(&cv, (const double (*)[2])pts, npts) == 0) {
-		rhi = fmin(rhi, sqrt(cv.area / (8 * sqrt(3.0))));
-		curve_free(&cv);
-	}
-	free(pts);
-	r = para_design_radius(sc, at, "area.parastichies", &P->parastichies,
-	    rim, rhi, trial_place, &T);
+		return place_area(ctx, P, res, 0, 0);
+	r = para_design_receptacle(ctx, "area", at, P->given[AR_RADIUS],
+	    &P->receptacle, &P->parastichies, 1, trial_place, &T);
 	/* --info's radius line is the one chosen. */
-	return r < 0 ? -1 : place_area(sc, P, res, r, 0);
+	return r < 0 ? -1 : place_area(ctx, P, res, r, 0);
 }
 
 const struct model area_model = {
@@ -292,5 +269,4 @@ const struct model area_model = {
 	.settings = &area_table,
 	.size = sizeof(struct area),
 	.run = area_run,
-	.svg = PROJ_TOP,
 };

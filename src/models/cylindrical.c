@@ -13,11 +13,12 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "models/cylindrical_lattice.h"
+#include "analysis/design.h"
 #include "diag.h"
+#include "geometry/geometry.h"
 #include "mem.h"
+#include "models/cylindrical_lattice.h"
 #include "models/model.h"
-#include "analysis/parastichy.h"
 
 enum { CY_RADIUS, CY_PARASTICHIES, CY_RISE, CY_LENGTH, CY__N };
 
@@ -62,7 +63,7 @@ struct pattern {
 
 /* The pattern from cylindrical.parastichies, with every check. */
 static int
-from_parastichies(const struct scene *sc, const struct cylindrical *cy,
+from_parastichies(const struct model_ctx *ctx, const struct cylindrical *cy,
     struct pattern *p)
 {
 	const struct int_list *par = &cy->parastichies;
@@ -70,12 +71,12 @@ from_parastichies(const struct scene *sc, const struct cylindrical *cy,
 	int m = par->v[0], n = par->v[1];
 
 	if (m >= n) {
-		scene_error(sc, at, "parastichies (%d, %d) must be increasing: "
-		    "m < n", m, n);
+		model_error(ctx, at, "parastichies (%d, %d) must be "
+		    "increasing: m < n", m, n);
 		return -1;
 	}
 	if (para_gcd(m, n) != 1) {
-		scene_error(sc, at, "parastichies (%d, %d) have the common "
+		model_error(ctx, at, "parastichies (%d, %d) have the common "
 		    "factor %d: the pattern would not be a single spiral", m, n,
 		    para_gcd(m, n));
 		return -1;
@@ -85,34 +86,34 @@ from_parastichies(const struct scene *sc, const struct cylindrical *cy,
 	cyl_range(m, n, &p->lo, &p->hi);
 	if (par->n == 3) {
 		if (par->v[2] != m + n) {
-			scene_error(sc, at, "a triple must be [m, n, m+n]: "
+			model_error(ctx, at, "a triple must be [m, n, m+n]: "
 			    "%d is not %d + %d", par->v[2], m, n);
 			return -1;
 		}
 		cyl_triple(m, n, &p->alpha, &p->h, &p->d);
-		if (sc->given[S_DIVERGENCE]) {
-			scene_error(sc, sc->given[S_DIVERGENCE], "the triple (%d, %d, %d) "
-			    "fixes the divergence at %.6f; leave divergence "
-			    "out", m, n, m + n, p->alpha);
+		if (ctx->divergence_line) {
+			model_error(ctx, ctx->divergence_line, "the triple "
+			    "(%d, %d, %d) fixes the divergence at %.6f; leave "
+			    "divergence out", m, n, m + n, p->alpha);
 			return -1;
 		}
 		return 0;
 	}
-	if (!sc->given[S_DIVERGENCE])
+	if (!ctx->divergence_line)
 		/* The golden angle where it fits, else the range's middle. */
 		p->alpha = GOLDEN_ANGLE >= p->lo && GOLDEN_ANGLE <= p->hi ?
 		    GOLDEN_ANGLE : (p->lo + p->hi) / 2;
-	else if (cyl_fold(sc->divergence) < p->lo - 1e-9 ||
-	    cyl_fold(sc->divergence) > p->hi + 1e-9) {
-		scene_error(sc, sc->given[S_DIVERGENCE], "divergence %.9g is outside "
-		    "[%.3f, %.3f] for parastichies (%d, %d)", sc->divergence,
-		    p->lo, p->hi, m, n);
+	else if (cyl_fold(ctx->divergence) < p->lo - 1e-9 ||
+	    cyl_fold(ctx->divergence) > p->hi + 1e-9) {
+		model_error(ctx, ctx->divergence_line, "divergence %.9g is "
+		    "outside [%.3f, %.3f] for parastichies (%d, %d)",
+		    ctx->divergence, p->lo, p->hi, m, n);
 		return -1;
 	} else
-		p->alpha = sc->divergence;
+		p->alpha = ctx->divergence;
 	if (cyl_pair(m, n, p->alpha, &p->h, &p->d) != 0) {
 		/* Only at a range end can rounding tip it over. */
-		scene_error(sc, GIVEN_AT(sc, S_DIVERGENCE), "no (%d, %d) pattern at "
+		model_error(ctx, ctx->divergence_line, "no (%d, %d) pattern at "
 		    "divergence %.9g", m, n, p->alpha);
 		return -1;
 	}
@@ -120,26 +121,26 @@ from_parastichies(const struct scene *sc, const struct cylindrical *cy,
 }
 
 static int
-pattern_find(const struct scene *sc, const struct cylindrical *cy,
+pattern_find(const struct model_ctx *ctx, const struct cylindrical *cy,
     struct pattern *p)
 {
 	int have_par = cy->given[CY_PARASTICHIES] != 0;
 	int have_rise = cy->given[CY_RISE] != 0;
 
 	if (have_par == have_rise) {
-		scene_error(sc, have_par ? cy->given[CY_RISE] :
+		model_error(ctx, have_par ? cy->given[CY_RISE] :
 		    GIVEN_AT(cy, CY_RISE),
 		    "give cylindrical.parastichies or cylindrical.rise, %s",
 		    have_par ? "not both" : "one of them");
 		return -1;
 	}
 	if (have_par)
-		return from_parastichies(sc, cy, p);
-	p->alpha = sc->divergence;
+		return from_parastichies(ctx, cy, p);
+	p->alpha = ctx->divergence;
 	p->h = cy->rise;
 	if (cyl_contacts(p->alpha, p->h, &p->m, &p->n, &p->d) != 0) {
-		scene_error(sc, cy->given[CY_RISE], "rise %.9g is too small to "
-		    "find the contact parastichies", p->h);
+		model_error(ctx, cy->given[CY_RISE], "rise %.9g is too small "
+		    "to find the contact parastichies", p->h);
 		return -1;
 	}
 	cyl_range(p->m, p->n, &p->lo, &p->hi);
@@ -148,33 +149,27 @@ pattern_find(const struct scene *sc, const struct cylindrical *cy,
 
 /* How many organs: count, or as many as fit in cylindrical.length. */
 static long long
-organ_count(const struct scene *sc, const struct cylindrical *cy,
+organ_count(const struct model_ctx *ctx, const struct cylindrical *cy,
     const struct pattern *p, double R)
 {
 	int have_len = cy->given[CY_LENGTH];
 	double n;
 
-	if (sc->given[S_COUNT] && have_len) {
-		scene_error(sc, have_len, "give count or cylindrical.length, "
+	if (ctx->count_line && have_len) {
+		model_error(ctx, have_len, "give count or cylindrical.length, "
 		    "not both");
 		return -1;
 	}
-	if (!have_len) {
-		if (!sc->given[S_COUNT]) {
-			scene_error(sc, 1, "missing setting 'count' (or "
-			    "cylindrical.length)");
-			return -1;
-		}
-		return sc->count;
-	}
+	if (!have_len)
+		return ctx->count;
 	if (R == 0) {
-		scene_error(sc, have_len, "cylindrical.length needs a constant "
-		    "cylindrical.radius; give count instead");
+		model_error(ctx, have_len, "cylindrical.length needs a "
+		    "constant cylindrical.radius; give count instead");
 		return -1;
 	}
 	n = floor(cy->length / (p->h * R) + 1e-9) + 1;
 	if (n > COUNT_MAX) {
-		scene_error(sc, have_len, "cylindrical.length %.9g "
+		model_error(ctx, have_len, "cylindrical.length %.9g "
 		    "holds %.0f organs, more than %d", cy->length, n,
 		    COUNT_MAX);
 		return -1;
@@ -184,7 +179,7 @@ organ_count(const struct scene *sc, const struct cylindrical *cy,
 
 /* Organ k's radius; an error names the organ. */
 static int
-radius_at(const struct scene *sc, const struct cylindrical *cy,
+radius_at(const struct model_ctx *ctx, const struct cylindrical *cy,
     struct expr_env *env, long long k, long long N, double *rho)
 {
 	const struct expr_setting *es = &cy->radius;
@@ -193,47 +188,43 @@ radius_at(const struct scene *sc, const struct cylindrical *cy,
 		*rho = 1;
 		return 0;
 	}
-	env->n = k;
-	env->var[V_N] = (double)k;
-	env->var[V_COUNT] = (double)N;
-	env->var[V_T] = N > 1 ? (double)k / (double)(N - 1) : 0;
-	if (scene_eval(sc, es, "cylindrical.radius", "organ", env, rho) != 0)
+	expr_env_organ(env, k, N);
+	if (model_eval(ctx, es, "cylindrical.radius", "organ", env, rho) != 0)
 		return -1;
 	if (*rho > 0)
 		return 0;
-	diag(ST_SCENE, sc->file, es->line, 0, "cylindrical.radius is %.9g at "
+	diag(ST_SCENE, ctx->file, es->line, 0, "cylindrical.radius is %.9g at "
 	    "organ %lld; it must be positive", *rho, k);
 	return -1;
 }
 
 static int
-cylindrical_run(const struct scene *sc, const void *params,
-    struct result *res)
+cylindrical_run(const struct model_ctx *ctx, struct result *res)
 {
-	const struct cylindrical *cy = params;
-	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
+	const struct cylindrical *cy = ctx->params;
+	struct expr_env env = { { 0 }, (uint64_t)ctx->seed, 0 };
 	struct pattern p;
 	double Rconst = 0, *rho, *z;	/* 0: the radius varies */
 	long long N;
 	int dm, dn;
 
-	if (pattern_find(sc, cy, &p) != 0)
+	if (pattern_find(ctx, cy, &p) != 0)
 		return -1;
 	if (cy->radius.e == NULL)
 		Rconst = 1;
 	else if (expr_is_constant(cy->radius.e, &Rconst) && !(Rconst > 0)) {
 		/* Before the count, which a constant radius may decide. */
-		scene_error(sc, cy->given[CY_RADIUS], "cylindrical.radius "
+		model_error(ctx, cy->given[CY_RADIUS], "cylindrical.radius "
 		    "%.9g must be positive", Rconst);
 		return -1;
 	}
-	if ((N = organ_count(sc, cy, &p, Rconst)) < 0)
+	if ((N = organ_count(ctx, cy, &p, Rconst)) < 0)
 		return -1;
 
 	rho = xcalloc((size_t)N, sizeof(*rho));
 	z = xcalloc((size_t)N, sizeof(*z));
 	for (long long k = 0; k < N; k++) {
-		if (radius_at(sc, cy, &env, k, N, &rho[k]) != 0) {
+		if (radius_at(ctx, cy, &env, k, N, &rho[k]) != 0) {
 			free(rho);
 			free(z);
 			return -1;
@@ -245,6 +236,7 @@ cylindrical_run(const struct scene *sc, const void *params,
 
 	result_init(res, (size_t)N);
 	res->divergence = p.alpha;
+	res->svg = PROJ_UNROLL;
 	for (long long k = 0; k < N; k++) {
 		long long a = k > 0 ? k - 1 : k, b = k + 1 < N ? k + 1 : k;
 		double slope = b > a && z[b] > z[a] ?
@@ -276,5 +268,6 @@ const struct model cylindrical_model = {
 	.settings = &cylindrical_table,
 	.size = sizeof(struct cylindrical),
 	.run = cylindrical_run,
-	.svg = PROJ_UNROLL,
+	.needs_count = 1,
+	.count_else = "length",
 };

@@ -1,12 +1,11 @@
 /*
- * models.c - the registry of models, and running one: the model
- * places, organs_apply() dresses, and the result is given the facts of
- * the scene that writers need.
+ * models.c - the registry of models, and running one: the checks every
+ * model shares, then its own placement; and what the context gives a
+ * model to report with.
  */
-#include <stdio.h>
+#include <stdarg.h>
 #include <string.h>
 
-#include "mem.h"
 #include "models/model.h"
 
 extern const struct model planar_model, cylindrical_model, collision_model,
@@ -31,33 +30,35 @@ model_find(const char *name)
 }
 
 int
-model_run(const struct scene *sc, struct result *res)
+model_run(const struct model *m, const struct model_ctx *ctx,
+    struct result *res)
 {
 	*res = (struct result){0};
-	if (sc->model->run(sc, sc->params, res) != 0)
-		return -1;
-	stretch_apply(res, sc->stretch);
-	memcpy(res->name, sc->name, sizeof(res->name));
-	res->model = sc->model->name;
-	res->seed = sc->seed;
-	res->svg = sc->model->svg;
-	res->rim_last = sc->model->rim_last;
-	res->source = xstrdup(sc->file);
-	res->objects = xcalloc(sc->nobjects, sizeof(*res->objects));
-	for (size_t i = 0; i < sc->nobjects; i++)
-		snprintf(res->objects[i], sizeof(res->objects[i]), "%s",
-		    sc->objects[i]);
-	res->nobjects = sc->nobjects;
-	res->frame = sc->frame_no;
-	res->frames = 1;
-	res->frame_f = sc->frame_f;
-	/* A mean of angles that differ lays out no rays. */
-	if (!sc->model->emerges && !divergence_rays(res->divergence,
-	    res->count, &res->rays_p, &res->rays))
-		res->rays = res->rays_p = 0;
-	if (organs_apply(sc, res) != 0) {
-		result_free(res);
+	if (m->needs_count && !ctx->count_line && (m->count_else == NULL ||
+	    !settings_given(m->settings, ctx->params, m->count_else))) {
+		if (m->count_else != NULL)
+			model_error(ctx, 1, "missing setting 'count' (or "
+			    "%s.%s)", m->name, m->count_else);
+		else
+			model_error(ctx, 1, "missing setting 'count'");
 		return -1;
 	}
-	return 0;
+	return m->run(ctx, res);
+}
+
+void
+model_error(const struct model_ctx *ctx, int line, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	settings_verror(ctx->file, line, fmt, ap);
+	va_end(ap);
+}
+
+int
+model_eval(const struct model_ctx *ctx, const struct expr_setting *es,
+    const char *path, const char *item, struct expr_env *env, double *v)
+{
+	return expr_setting_eval(es, ctx->file, path, item, env, v);
 }

@@ -7,8 +7,10 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "models/model.h"
+#include "analysis/design.h"
 #include "analysis/parastichy.h"
+#include "geometry/geometry.h"
+#include "models/model.h"
 
 enum { PL_SCALE, PL_OUTER, PL_INNER, PL_EXPONENT, PL_DOME, PL_PARASTICHIES,
 	PL__N };
@@ -62,33 +64,28 @@ power(double n, double e)
 }
 
 static int
-planar_check(const struct scene *sc, const struct planar *p)
+planar_check(const struct model_ctx *ctx, const struct planar *p)
 {
-	if (!sc->given[S_COUNT] && !p->given[PL_PARASTICHIES]) {
-		scene_error(sc, 1, "missing setting 'count' (or "
-		    "planar.parastichies)");
-		return -1;
-	}
-	if (sc->given[S_COUNT] && p->given[PL_PARASTICHIES]) {
-		scene_error(sc, p->given[PL_PARASTICHIES], "give count or "
+	if (ctx->count_line && p->given[PL_PARASTICHIES]) {
+		model_error(ctx, p->given[PL_PARASTICHIES], "give count or "
 		    "planar.parastichies, not both");
 		return -1;
 	}
 	if (p->given[PL_OUTER] && p->given[PL_SCALE]) {
-		scene_error(sc, p->given[PL_OUTER], "give planar.scale or "
+		model_error(ctx, p->given[PL_OUTER], "give planar.scale or "
 		    "planar.outer, not both");
 		return -1;
 	}
 	if (p->given[PL_OUTER] && p->outer <= p->inner) {
-		scene_error(sc, p->given[PL_OUTER], "planar.outer %.9g must be "
-		    "greater than planar.inner %.9g", p->outer, p->inner);
+		model_error(ctx, p->given[PL_OUTER], "planar.outer %.9g must "
+		    "be greater than planar.inner %.9g", p->outer, p->inner);
 		return -1;
 	}
 	return 0;
 }
 
 static int
-place(const struct scene *sc, const struct planar *p, size_t count,
+place(const struct model_ctx *ctx, const struct planar *p, size_t count,
     struct result *res)
 {
 	/*
@@ -97,28 +94,25 @@ place(const struct scene *sc, const struct planar *p, size_t count,
 	 * models' receptacles are, rather than sqrt(count) units.
 	 */
 	double outer = p->given[PL_OUTER] ? p->outer : p->inner + 1;
-	double c = p->scale, rim, kdome;
+	double c = p->scale, rim;
 
 	if (!p->given[PL_SCALE])
 		c = count > 1 ? (outer - p->inner) /
 		    pow((double)(count - 1), p->exponent) : outer - p->inner;
 	rim = p->inner + c * power((double)(count - 1), p->exponent);
-	/* z = dome * (1 - (rho/rim)^2), so dz/drho = -kdome * rho. */
-	kdome = rim > 0 ? 2 * p->dome / (rim * rim) : 0;
 
 	result_init(res, count);
-	res->divergence = sc->divergence;
+	res->divergence = ctx->divergence;
+	res->svg = PROJ_TOP;
+	res->rim_last = 1;
 	for (size_t n = 0; n < count; n++) {
 		struct organ *o = &res->organs[n];
-		double phi = angle_mod360((double)n, sc->divergence);
+		double phi = angle_mod360((double)n, ctx->divergence);
 		/* m: organ 0 takes its area per organ from n = 1. */
 		double m = n > 1 ? (double)n : 1, pm = power(m, p->exponent);
 		double rho = p->inner + (n > 0 ? c * pm : 0);
-		double z = rim > 0 ? p->dome * (1 - (rho / rim) * (rho / rim)) :
-		    p->dome;
 
-		/* The tip is the centre: away from it is outward, (1, dz/drho). */
-		frame_revolution(o, phi, rho, z, 1, -kdome * rho);
+		frame_dome(o, phi, rho, rim, p->dome);
 		/* Area per organ d(pi rho^2)/dn shared as hexagons. */
 		o->radius = sqrt(M_PI * (p->inner + c * pm) *
 		    (c * p->exponent * pm / m) / sqrt(3.0));
@@ -132,7 +126,7 @@ place(const struct scene *sc, const struct planar *p, size_t count,
 
 /* Inverse design: the rim pair of a trial count. */
 struct trial {
-	const struct scene *sc;
+	const struct model_ctx *ctx;
 	const struct planar *p;
 };
 
@@ -144,7 +138,7 @@ trial_pair(void *ctx, double x, int pair[2])
 	struct para_zone z[64];
 	size_t nz;
 
-	if (place(T->sc, T->p, (size_t)llround(x), &res) != 0)
+	if (place(T->ctx, T->p, (size_t)llround(x), &res) != 0)
 		return -1;
 	nz = para_zones(&res, NULL, z, 64);
 	pair[0] = nz ? z[nz - 1].m : 0;
@@ -154,19 +148,19 @@ trial_pair(void *ctx, double x, int pair[2])
 }
 
 static int
-planar_run(const struct scene *sc, const void *params, struct result *res)
+planar_run(const struct model_ctx *ctx, struct result *res)
 {
-	const struct planar *p = params;
+	const struct planar *p = ctx->params;
 	const struct int_list *want = &p->parastichies;
-	struct trial T = { sc, p };
+	struct trial T = { ctx, p };
 	char reach[512];
 	double x;
 
-	if (planar_check(sc, p) < 0)
+	if (planar_check(ctx, p) < 0)
 		return -1;
 	if (!p->given[PL_PARASTICHIES])
-		return place(sc, p, (size_t)sc->count, res);
-	if (para_want_check(sc, p->given[PL_PARASTICHIES],
+		return place(ctx, p, (size_t)ctx->count, res);
+	if (para_want_check(ctx, p->given[PL_PARASTICHIES],
 	    "planar.parastichies", want) != 0)
 		return -1;
 	/* Counts up to where the rim shows about 4 n around it. */
@@ -175,13 +169,13 @@ planar_run(const struct scene *sc, const void *params, struct result *res)
 	if (x < 0)
 		return -1;
 	if (x == 0) {
-		scene_error(sc, p->given[PL_PARASTICHIES], "no count shows "
+		model_error(ctx, p->given[PL_PARASTICHIES], "no count shows "
 		    "parastichies %d/%d at the rim with divergence %.9g; the "
 		    "counts tried show %s", want->v[0], want->v[1],
-		    sc->divergence, reach);
+		    ctx->divergence, reach);
 		return -1;
 	}
-	return place(sc, p, (size_t)llround(x), res);
+	return place(ctx, p, (size_t)llround(x), res);
 }
 
 const struct model planar_model = {
@@ -191,6 +185,6 @@ const struct model planar_model = {
 	.settings = &planar_table,
 	.size = sizeof(struct planar),
 	.run = planar_run,
-	.svg = PROJ_TOP,
-	.rim_last = 1,
+	.needs_count = 1,
+	.count_else = "parastichies",
 };

@@ -16,7 +16,6 @@
 #include "scene/compound.h"
 #include "diag.h"
 #include "mem.h"
-#include "models/model.h"
 
 /* The scenes being loaded, innermost first: what a cycle would revisit. */
 struct chain {
@@ -244,13 +243,14 @@ compound_load(struct compound *C, const char *path, const struct loading *ld,
 }
 
 int
-compound_run(struct compound *C, const struct frame *fr)
+compound_run(struct compound *C, const struct frame *fr,
+    void (*progress)(long long done, int last))
 {
 	for (size_t i = 0; i < C->n; i++) {
 		struct part *p = C->parts[i];
 		struct result *r = &p->res;
 
-		if (model_run(&p->sc, r) != 0) {
+		if (scene_run(&p->sc, r, progress) != 0) {
 			if (p->from != NULL)
 				diag(ST_SCENE, p->from, p->from_line, 0, "in %s, "
 				    "the scene of organ object \"%s\" included "

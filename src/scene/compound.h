@@ -36,8 +36,12 @@ struct compound {
  */
 int	compound_load(struct compound *, const char *path,
 	    const struct loading *ld, int (*check)(const struct scene *));
-/* Run every model, parts first, and link the parts; 0 or -1. */
-int	compound_run(struct compound *, const struct frame *fr);
+/*
+ * Run every scene, parts first, and link the parts; progress, if not
+ * NULL, is told of long placements (model.h).  0 or -1.
+ */
+int	compound_run(struct compound *, const struct frame *fr,
+	    void (*progress)(long long done, int last));
 void	compound_free(struct compound *);
 /* rel taken relative to the directory of the scene file from, which
  * names it; allocated. */

@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "diag.h"
 #include "scene/expr.h"
 #include "phyllo.h"
 #include "mem.h"
@@ -646,6 +647,34 @@ expr_eval(struct expr *e, const struct expr_env *env, double *result)
 		return EXPR_NOTFINITE;
 	*result = st[0];
 	return EXPR_OK;
+}
+
+void
+expr_env_organ(struct expr_env *env, long long n, long long N)
+{
+	env->n = n;
+	env->var[V_N] = (double)n;
+	env->var[V_COUNT] = (double)N;
+	env->var[V_T] = N > 1 ? (double)n / (double)(N - 1) : 0;
+}
+
+int
+expr_setting_eval(const struct expr_setting *es, const char *file,
+    const char *path, const char *item, struct expr_env *env, double *v)
+{
+	switch (expr_eval(es->e, env, v)) {
+	case EXPR_OK:
+		return 0;
+	case EXPR_DIVZERO:
+		diag(ST_SCENE, file, es->line, 0, "%s: division by zero at "
+		    "%s %lld", path, item, env->n);
+		return -1;
+	case EXPR_NOTFINITE:
+		break;
+	}
+	diag(ST_SCENE, file, es->line, 0, "%s is not a finite number at "
+	    "%s %lld", path, item, env->n);
+	return -1;
 }
 
 void

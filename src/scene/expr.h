@@ -51,6 +51,12 @@ struct expr_const {
 
 struct expr;
 
+/* A number or expression setting (T_EXPR), and where it was given. */
+struct expr_setting {
+	struct expr	*e;		/* NULL: not given */
+	int		 line;
+};
+
 struct expr	*expr_compile(const char *src, unsigned vars,
 		    struct expr_error *);
 /* The same, where the names in consts are those numbers. */
@@ -63,6 +69,21 @@ unsigned	 expr_vars(const struct expr *);
 enum expr_status expr_eval(struct expr *, const struct expr_env *,
 		    double *result);
 void		 expr_free(struct expr *);
+
+/*
+ * What organ n of N sees: n, N, and t = n / (N - 1), 0 for one organ;
+ * the other variables are left as they are.
+ */
+void		 expr_env_organ(struct expr_env *, long long n, long long N);
+
+/*
+ * Evaluate the setting at path (as the scene file names it, given in
+ * file) for env->n; an error names the item, "organ 5".  0, or -1
+ * after a diagnostic.
+ */
+int		 expr_setting_eval(const struct expr_setting *,
+		    const char *file, const char *path, const char *item,
+		    struct expr_env *, double *v);
 
 /* The uniform number in [0, 1) that rand(k) gives organ n. */
 double		 expr_rand(uint64_t seed, long long n, long long k);

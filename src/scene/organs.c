@@ -11,7 +11,7 @@
 
 #include "diag.h"
 #include "mem.h"
-#include "models/model.h"
+#include "scene/scene.h"
 
 /* Keys the choice among variants apart from every rand(k) of the user. */
 #define VARIANT_SALT	0x76617269616e7473ull	/* "variants" */
@@ -148,7 +148,7 @@ eval(const struct scene *sc, const struct expr_setting *es,
 		return 0;
 	}
 	snprintf(path, sizeof(path), "organs.%s", what);
-	return scene_eval(sc, es, path, "organ", env, v);
+	return expr_setting_eval(es, sc->file, path, "organ", env, v);
 }
 
 /* Rotate a towards b by deg degrees in their plane: both stay unit. */
@@ -169,17 +169,14 @@ static int
 apply_span(const struct scene *sc, const struct span *sp, struct result *r)
 {
 	const struct organ_range *rg = sp->rg;
-	double N = (double)r->count, len = (double)(sp->to - sp->from);
+	double len = (double)(sp->to - sp->from);
 	struct expr_env env = { { 0 }, (uint64_t)sc->seed, 0 };
 
 	for (long long n = sp->from; n <= sp->to; n++) {
 		struct organ *o = &r->organs[n];
 		double scale, alt, tilt, roll;
 
-		env.n = n;
-		env.var[V_N] = (double)n;
-		env.var[V_COUNT] = N;
-		env.var[V_T] = N > 1 ? (double)n / (N - 1) : 0;
+		expr_env_organ(&env, n, (long long)r->count);
 		env.var[V_S] = len > 0 ? (double)(n - sp->from) / len : 0;
 		env.var[V_R] = o->radius;
 		env.var[V_PHI] = o->phi;

@@ -1162,31 +1162,9 @@ scene_free(struct scene *sc)
 void
 scene_error(const struct scene *sc, int line, const char *fmt, ...)
 {
-	char msg[512];
 	va_list ap;
 
 	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
+	settings_verror(sc->file, line, fmt, ap);
 	va_end(ap);
-	diag(ST_SCENE, sc->file, line > 0 ? line : 1, 0, "%s", msg);
-}
-
-/* Evaluate the setting at path for env->n, naming it ("organ 5") on error. */
-int
-scene_eval(const struct scene *sc, const struct expr_setting *es,
-    const char *path, const char *item, struct expr_env *env, double *v)
-{
-	switch (expr_eval(es->e, env, v)) {
-	case EXPR_OK:
-		return 0;
-	case EXPR_DIVZERO:
-		diag(ST_SCENE, sc->file, es->line, 0, "%s: division by zero at "
-		    "%s %lld", path, item, env->n);
-		return -1;
-	case EXPR_NOTFINITE:
-		break;
-	}
-	diag(ST_SCENE, sc->file, es->line, 0, "%s is not a finite number at "
-	    "%s %lld", path, item, env->n);
-	return -1;
 }

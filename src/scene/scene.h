@@ -8,37 +8,9 @@
 #include "result/organ.h"
 #include "scene/settings.h"
 
-#define COUNT_MAX	10000000	/* most organs a scene may ask for */
 #define SCENE_BYTES_MAX	(16L * 1024 * 1024)
 #define SCENE_PATH_MAX	1024		/* bytes in a sub-scene's file name */
 
-/* A number or expression setting, and where it was given. */
-struct expr_setting {
-	struct expr	*e;		/* NULL: not given */
-	int		 line;
-};
-
-/* A short array of integers, [8, 13] or [8, 13, 21]. */
-struct int_list {
-	int		 v[3];
-	int		 n;
-};
-
-#define PROFILE_POINTS_MAX	3001	/* 1000 Bezier segments */
-
-/* A list of (x, y) points, such as a receptacle's profile. */
-struct point_list {
-	double		(*p)[2];	/* owned */
-	int		 n;
-};
-
-#define VARIANTS_MAX	256		/* objects in one organs entry */
-
-/* File names, one per variant of an entry (T_FILES). */
-struct file_list {
-	char		**v;		/* owned, or NULL: not given */
-	size_t		 n;
-};
 #define RANGES_MAX	1024		/* entries in organs */
 
 /* One entry of organs = ( ... ): an index range and what its organs are. */
@@ -135,13 +107,25 @@ int	 scene_load_buffer_as(struct scene *, const char *file,
 	    const char *text, size_t len, const char *object,
 	    const struct loading *);
 void	 scene_free(struct scene *);
+
+struct model_ctx;
+
+/* What the scene's model sees (model.h); progress may be NULL. */
+void	 scene_model_ctx(const struct scene *, struct model_ctx *,
+	    void (*progress)(long long done, int last));
+/*
+ * Run the scene's model, then apply its organs entries, leaving a
+ * result that carries everything writers need (organ.h); progress, if
+ * not NULL, is told of a long placement.  0, or -1 after a diagnostic.
+ */
+int	 scene_run(const struct scene *, struct result *,
+	    void (*progress)(long long done, int last));
+/* Apply the scene's organs entries to placed organs (organs.c); 0 or -1. */
+int	 organs_apply(const struct scene *, struct result *);
 void	 scene_error(const struct scene *, int line, const char *fmt, ...)
 #if defined(__GNUC__)
 	    __attribute__((format(printf, 3, 4)))
 #endif
 	    ;
-int	 scene_eval(const struct scene *, const struct expr_setting *,
-	    const char *path, const char *item, struct expr_env *,
-	    double *v);
 
 #endif

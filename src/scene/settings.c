@@ -7,7 +7,9 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "diag.h"
 #include "models/model.h"
 #include "scene/scene.h"
 #include "scene/settings.h"
@@ -107,6 +109,26 @@ list_row(FILE *fp, const char *prefix, const struct row *r)
 	if (r->sub != NULL)
 		for (size_t i = 0; i < r->sub->n; i++)
 			list_row(fp, path, &r->sub->rows[i]);
+}
+
+void
+settings_verror(const char *file, int line, const char *fmt, va_list ap)
+{
+	char msg[512];
+
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	diag(ST_SCENE, file, line > 0 ? line : 1, 0, "%s", msg);
+}
+
+int
+settings_given(const struct table *tab, const void *obj, const char *name)
+{
+	const int *given = (const int *)((const char *)obj + tab->given);
+
+	for (size_t i = 0; i < tab->n; i++)
+		if (strcmp(tab->rows[i].name, name) == 0)
+			return given[i];
+	return 0;
 }
 
 /* The top level, then each model's group, then the organs entries. */

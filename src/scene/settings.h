@@ -8,6 +8,7 @@
 #ifndef SETTINGS_H
 #define SETTINGS_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -17,7 +18,7 @@ enum type {
 	T_FLOAT,	/* double; integers are accepted */
 	T_IDENT,	/* char[NAME_LEN + 1], [A-Za-z][A-Za-z0-9_]* */
 	T_CHOICE,	/* int: index into the row's words */
-	T_EXPR,		/* struct expr_setting: a number or an expression */
+	T_EXPR,		/* struct expr_setting (expr.h): number or expression */
 	T_NAMES,	/* an identifier or an array of them (variants) */
 	T_WEIGHTS,	/* an array of numbers, one per variant */
 	T_INTS,		/* struct int_list: 2 or 3 positive integers */
@@ -26,6 +27,32 @@ enum type {
 	T_MODEL,	/* the model's name, from the registry (model.h) */
 	T_VEC3,		/* double[3]: [x, y, z] */
 	T_FILES		/* a file name or an array of them, one per variant */
+};
+
+#define COUNT_MAX	10000000	/* most organs a scene may ask for */
+
+/* The values of settings, by type, as the structs tables describe hold them. */
+
+/* A short array of integers, [8, 13] or [8, 13, 21] (T_INTS). */
+struct int_list {
+	int		 v[3];
+	int		 n;
+};
+
+#define PROFILE_POINTS_MAX	3001	/* 1000 Bezier segments */
+
+/* A list of (x, y) points, such as a receptacle's profile (T_POINTS). */
+struct point_list {
+	double		(*p)[2];	/* owned */
+	int		 n;
+};
+
+#define VARIANTS_MAX	256		/* objects in one organs entry */
+
+/* File names, one per variant of an entry (T_FILES). */
+struct file_list {
+	char		**v;		/* owned, or NULL: not given */
+	size_t		 n;
 };
 
 #define F_LO_OPEN	0x01	/* lo itself is not allowed */
@@ -72,6 +99,16 @@ struct table {
 /* The line to report a problem with row id of p at: its own, else its group's. */
 #define GIVEN_AT(p, id)	((p)->given[id] ? (p)->given[id] : \
 	(p)->at.line > 0 ? (p)->at.line : 1)
+
+/*
+ * A problem with a setting given at line of file (0: at its start):
+ * what scene_error() and model_error() print.
+ */
+void	settings_verror(const char *file, int line, const char *fmt, va_list);
+
+/* The line row name of obj (described by tab) was given at; 0: not given. */
+int	settings_given(const struct table *tab, const void *obj,
+	    const char *name);
 
 /* The tables, one setting a line, for the test that checks the man page. */
 void	settings_list(FILE *);

@@ -97,7 +97,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	    fwrite(data, 1, size, fp) != size || fclose(fp) != 0)
 		abort();
 	if (compound_load(&c, path, &ld, pov_check) != 0 || !small(&c) ||
-	    compound_run(&c, &fr) != 0)
+	    compound_run(&c, &fr, NULL) != 0)
 		goto out;
 	all[0] = compound_main(&c);
 	sink_init(&s, NULL);

@@ -27,7 +27,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
 	if (!ready) {
 		if (scene_load_buffer(&sc, "t.cfg", text, strlen(text)) != 0 ||
-		    model_run(&sc, &res) != 0 || model_run(&sc, &part) != 0)
+		    scene_run(&sc, &res, NULL) != 0 ||
+		    scene_run(&sc, &part, NULL) != 0)
 			return 0;
 		part.part = 1;
 		ready = 1;

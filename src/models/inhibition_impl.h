@@ -1,0 +1,157 @@
+/*
+ * inhibition_impl.h - what the inhibition model's files share: the
+ * field of primordia placed so far, the circle's cuts and gaps, and
+ * the functions that search them (inhibition.c runs the model,
+ * inhibition_far.c keeps the power law's far field, inhibition_kernel.c
+ * evaluates the energy, inhibition_min.c finds its least minimum on the
+ * edge, inhibition_bounds.c bounds it in each gap).
+ */
+#ifndef INHIBITION_IMPL_H
+#define INHIBITION_IMPL_H
+
+#include <math.h>
+#include <stddef.h>
+
+#define R0		1.0	/* the meristem's radius: the unit */
+#define MODES		80	/* of the power law's far field */
+#define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
+
+/*
+ * The modes the lower bounds evaluate: the others, x_far^m smaller and
+ * less, are bounded by their amplitudes.
+ */
+#define BOUND_MODES	24
+
+/*
+ * A cut's primordium as the bounds want it, if it is a near one (the far
+ * field is bounded apart): in the cuts' order.
+ */
+struct cutp {
+	double		 c, s;		/* cos and sin of its angle */
+	double		 q0, r2;	/* R0^2 + r^2 and 2 R0 r */
+	double		 fl;		/* its floor */
+};
+
+/*
+ * The primordia so far: angle, its cosine and sine; ages from n.
+ *
+ * With the power law, the pull of a primordium at radius r on the
+ * edge point at angle th is (R0^2 + r^2 - 2 R0 r cos(th - phi))^-(s/2)
+ * = r^-s sum_j C_j(cos(th - phi)) x^j, x = R0 / r, with C_j the
+ * Gegenbauer polynomials of order s/2 (their generating function), and
+ * C_j(cos a) = sum_i w_ji cos((j - 2i) a).  So the primordia beyond
+ * radius far_r (x below x_far) add up to sum_m Fc_m cos(m th) + Fs_m
+ * sin(m th) over m <= MODES, from the moments sum r^-(s+j) cos(m phi)
+ * and sin(m phi); a plastochron's growth multiplies each by
+ * e^-(s+j)G.  Each primordium joins the moments once and costs nothing
+ * after: near ones are summed one by one, the rest in O(MODES^2) a
+ * primordium however many came before.
+ *
+ * The moments are kept in units that do not move: each as it was at the
+ * step whose S is base (times its weight), so a plastochron changes
+ * nothing stored, and the modes take the growth since base as a factor
+ * per j.  The units are reset (base moved up) before those factors could
+ * leave a double's range.
+ */
+struct field {
+	double		*phi, *c, *s;
+	size_t		 n;		/* placed */
+	double		*S;		/* S[n]: G_1 + ... + G_n */
+	double		*r;		/* r[k]: the radius now of the k-th
+					   newest, for the near ones */
+	size_t		 near;		/* newest that cut the circle */
+	size_t		 from;		/* the oldest summed one by one; the
+					   older are in the moments */
+	int		 moments;	/* 0: every one by one (all pairs) */
+	double		 far_r;		/* the radius where they join them */
+	double		 hs;		/* s / 2 */
+	double		*w;		/* per (m, j): the weight of moment
+					   (j, m) in mode m */
+	double		*Mc, *Ms;	/* the weighted moments at base */
+	double		 base;		/* their units' S */
+	size_t		 row[MODES + 2];	/* where m's moments start */
+	double		 Fc[MODES + 1], Fs[MODES + 1];	/* the modes */
+	int		 nmodes;	/* of the far field: MODES or GMODES */
+	double		*gt;		/* Gaussian: per primordium cos and
+					   sin (m phi), m <= GMODES */
+	double		 far_curv;	/* the far field's E'', at most */
+	double		 tail[2];	/* the most its modes past BOUND_MODES
+					   add to E and to E' */
+	double		 far_least;	/* and its least on the circle */
+	int		 check;		/* test every gap's bounds */
+	long long	 misses;	/* bounds above their gap's least E */
+	double		 floor;		/* the near ones' least pulls, */
+	double		*fl;		/* each, indexed as r */
+	struct cutp	*cp;		/* the near cuts in order, twice round */
+	size_t		*cpi;		/* their primordia */
+	size_t		 ncp;		/* how many */
+	size_t		*gpos;		/* per gap: the first near cut after
+					   its start, in cp */
+	struct cutp	*mid;		/* the near ones that are not cuts */
+	size_t		 nmid;
+	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
+};
+
+/* The circle cut at a primordium's angle: where, which, cos and sin. */
+struct cut {
+	double		 th;
+	size_t		 i;
+	double		 c, s;
+};
+
+/* Where gap g, from cut g, ends: at the next cut, round the circle. */
+static inline double
+gap_end(const struct cut *cuts, size_t k, size_t g)
+{
+	return g + 1 < k ? cuts[g + 1].th : cuts[0].th + 2 * M_PI;
+}
+
+/* A gap's search: its bound so far, from which tier, and where to start. */
+struct gap {
+	double		 lb, at;
+	int		 tier;
+	unsigned	 live;		/* gap_bound()'s */
+};
+
+#define TIERS		4
+
+/* The last tier's parts: each tier's parts are a number dividing it. */
+#define SUBPARTS	16
+
+/*
+ * The power law's pull at squared distance q, q^-(s/2): the common
+ * s = 3 and 2 without pow().
+ */
+static inline double
+pull_at(const struct field *F, double q)
+{
+	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : F->hs == 1 ? 1 / q :
+	    pow(q, -F->hs);
+}
+
+/* The far field (inhibition_far.c). */
+void	inhib_far_init(struct field *);
+void	inhib_far_step(struct field *);
+void	inhib_far_summary(struct field *);
+void	inhib_far_energy(const struct field *, double th, int modes,
+	    double e[3]);
+
+/* The energy (inhibition_kernel.c). */
+void	inhib_gauss_step(struct field *);
+void	inhib_energy(const struct field *, double th, double e[3]);
+double	inhib_energy_only(const struct field *, double th);
+
+/* The least minimum on the edge (inhibition_min.c). */
+double	inhib_minimise(const struct field *, double a, double b, double x,
+	    double *emin);
+double	inhib_next_angle(struct field *, struct cut *, struct gap *);
+
+/* Lower bounds of the energy in a gap (inhibition_bounds.c). */
+double	inhib_first_bound(const struct field *, const struct cut *,
+	    size_t k, size_t g, double a, double b, double *at);
+double	inhib_gap_bound(const struct field *, const struct cut *, size_t k,
+	    size_t g, double a, double b, int tier, double stop,
+	    unsigned *live, double *at);
+void	inhib_check_bounds(struct field *, const struct cut *, size_t k);
+
+#endif

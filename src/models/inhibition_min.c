@@ -1,0 +1,257 @@
+/*
+ * inhibition_min.c - the angle of least inhibition: Newton on E' in a
+ * gap, and the search over the gaps between the newest primordia's
+ * angles, passing over those whose lower bound is above the least E
+ * found.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "models/inhibition_impl.h"
+
+/*
+ * The minimum of E inside [a, b], from x, to 1e-12 rad: Newton on E'
+ * where E'' > 0 and its step stays inside the bracket of E''s signs,
+ * else the bracket's chord or half; or an end, if that is lower.
+ */
+double
+inhib_minimise(const struct field *F, double a, double b, double x,
+    double *emin)
+{
+	double e[3], ends[2] = { a, b }, last = 0;	/* Newton's step */
+	double d[2] = { 0, 0 };		/* E' at a and b, once known */
+	int done = 0, tried[2] = { 0, 0 }, moved, kept = -1;
+
+	for (int it = 0; it < 100 && !done; it++) {
+		double nx, step;
+		int newton;
+
+		inhib_energy(F, x, e);
+		moved = e[1] > 0;
+		if (moved) {
+			b = x;
+			d[1] = e[1];
+		} else {
+			a = x;
+			d[0] = e[1];
+		}
+		/* Illinois: an end kept twice has its slope halved. */
+		if (moved == kept)
+			d[!moved] /= 2;
+		kept = moved;
+		nx = e[2] > 0 ? x - e[1] / e[2] : (a + b) / 2;
+		newton = e[2] > 0 && nx > a && nx < b;
+		/*
+		 * Where Newton cannot go: to the gap's end that E falls
+		 * towards, once, where E still falling outwards ends the
+		 * search (E is mostly monotone in a gap whose ends are far
+		 * ones: halving took 40 sums to reach it); then between the
+		 * ends where E' changes sign, by its chord (regula falsi).
+		 */
+		if (!newton) {
+			if (e[1] < 0 && b == ends[1] && !tried[1]) {
+				nx = b;
+				tried[1] = 1;
+			} else if (e[1] > 0 && a == ends[0] && !tried[0]) {
+				nx = a;
+				tried[0] = 1;
+			} else {
+				nx = (a * d[1] - b * d[0]) / (d[1] - d[0]);
+				if (!(d[0] < 0 && d[1] > 0 && nx > a && nx < b))
+					nx = (a + b) / 2;
+			}
+		}
+		step = nx - x;
+		/*
+		 * Converged: the step under 1e-12; or a Newton step after
+		 * another, whose error (step / last^2) step^2 by Newton's
+		 * quadratic convergence is under 1e-13, the step under 1e-7.
+		 * E there from E and its derivatives here, exact to E'''
+		 * times the step cubed: a whole sum less.
+		 */
+		if (fabs(step) < 1e-12 || b - a < 1e-12 || (newton && last !=
+		    0 && fabs(step) < 1e-7 && fabs(step) * step * step <
+		    1e-13 * last * last)) {
+			e[0] += (e[1] + e[2] * step / 2) * step;
+			done = 1;
+		}
+		last = newton ? step : 0;
+		x = nx;
+	}
+	*emin = done ? e[0] : inhib_energy_only(F, x);
+	for (int side = 0; side < 2; side++) {
+		double ee = inhib_energy_only(F, ends[side]);
+
+		if (ee < *emin) {
+			*emin = ee;
+			x = ends[side];
+		}
+	}
+	return x;
+}
+
+static int
+cutcmp(const void *a, const void *b)
+{
+	double x = ((const struct cut *)a)->th, y = ((const struct cut *)b)->th;
+
+	return x < y ? -1 : x > y;
+}
+
+/*
+ * The circle's cuts, the k newest primordia's angles, in order (newest
+ * first among equal angles, as a stable sort of them newest first).
+ * From one step to the next the newest joins and, with k the same, the
+ * oldest leaves: one removal and one insertion keep the order, where a
+ * sort of them all took 8% of the time.  Otherwise they are sorted
+ * afresh.
+ */
+static void
+cuts_update(struct field *F, struct cut *cuts, size_t k)
+{
+	size_t n = F->n, p, lo = 0, hi;
+	struct cut nw;
+
+	if (!(F->ncut == k && F->cut_n + 1 == n && k > 0 && n > k)) {
+		for (size_t i = 0; i < k; i++) {
+			cuts[i].i = n - 1 - i;
+			cuts[i].th = remainder(F->phi[cuts[i].i], 2 * M_PI);
+			cuts[i].c = F->c[cuts[i].i];
+			cuts[i].s = F->s[cuts[i].i];
+		}
+		qsort(cuts, k, sizeof(*cuts), cutcmp);
+		F->ncut = k;
+		F->cut_n = n;
+		return;
+	}
+	for (p = 0; cuts[p].i != n - 1 - k; p++)
+		;
+	memmove(cuts + p, cuts + p + 1, (k - 1 - p) * sizeof(*cuts));
+	nw.i = n - 1;
+	nw.th = remainder(F->phi[n - 1], 2 * M_PI);
+	nw.c = F->c[n - 1];
+	nw.s = F->s[n - 1];
+	for (hi = k - 1; lo < hi; ) {	/* the first at or past nw.th */
+		size_t mid = (lo + hi) / 2;
+
+		if (cuts[mid].th < nw.th)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	memmove(cuts + lo + 1, cuts + lo, (k - 1 - lo) * sizeof(*cuts));
+	cuts[lo] = nw;
+	F->cut_n = n;
+}
+
+/*
+ * Gap g, while its bound is below the least E found: its bound made
+ * closer, tier by tier, and at the last searched.  Of equal minima the
+ * first gap's is taken, whatever order the gaps are searched in.
+ */
+static void
+search_gap(const struct field *F, const struct cut *cuts, size_t k,
+    size_t g, struct gap *gp, double *emin, double *th, size_t *gmin)
+{
+	double a = cuts[g].th, b = gap_end(cuts, k, g), e, x;
+
+	while (gp->lb < *emin && gp->tier + 1 < TIERS) {
+		double to = gp->at, bound = inhib_gap_bound(F, cuts, k, g, a, b,
+		    ++gp->tier, *emin, &gp->live, &to);
+
+		if (bound > gp->lb) {
+			gp->lb = bound;
+			gp->at = to;
+		}
+	}
+	if (!(gp->lb < *emin))
+		return;
+	x = inhib_minimise(F, a, b, gp->at, &e);
+	if (e < *emin || (e == *emin && g < *gmin)) {
+		*emin = e;
+		*th = x;
+		*gmin = g;
+	}
+}
+
+/*
+ * The angle of least inhibition on the edge.  The circle is cut at the
+ * angles of the near newest primordia, so that each gap holds one
+ * minimum.  A gap whose lower bound is above the least E found cannot
+ * hold the minimum: each gap's bound is made closer while it is below,
+ * and the gap searched if its closest bound still is.  As exact as a
+ * search of every gap, and most gaps are passed on their first bounds.
+ */
+double
+inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
+{
+	size_t k = F->near < F->n ? F->near : F->n, best = 0, gmin = k;
+	double th = 0, emin = HUGE_VAL;
+
+	cuts_update(F, cuts, k);
+	/* Opposite each primordium its pull is least: the floor of E. */
+	F->floor = 0;
+	F->nmid = 0;
+	for (size_t i = F->from; i < F->n; i++) {
+		double *fl = &F->fl[F->n - 1 - i], r = F->r[F->n - 1 - i];
+
+		*fl = pull_at(F, (R0 + r) * (R0 + r));
+		F->floor += *fl;
+		if (i + k < F->n)
+			F->mid[F->nmid++] = (struct cutp){ F->c[i], F->s[i],
+			    R0 * R0 + r * r, 2 * R0 * r, *fl };
+	}
+	/* The near cuts, in order; the far ones' pulls are the far field's. */
+	F->ncp = 0;
+	for (size_t c = 0; c < k; c++) {
+		size_t i = cuts[c].i;
+		double r = F->r[F->n - 1 - i];
+
+		if (i >= F->from) {
+			F->cpi[F->ncp] = i;
+			F->cp[F->ncp++] = (struct cutp){ F->c[i], F->s[i],
+			    R0 * R0 + r * r, 2 * R0 * r, F->fl[F->n - 1 - i] };
+		}
+		F->gpos[c] = F->ncp;	/* cut c itself is before gap c */
+	}
+	for (size_t c = 0; c < F->ncp; c++) {
+		F->cp[F->ncp + c] = F->cp[c];
+		F->cpi[F->ncp + c] = F->cpi[c];
+	}
+	/*
+	 * First the gap where the last divergence would put it: its minimum
+	 * is mostly the least, and rules out the most gaps soonest.  Then
+	 * every other in turn.
+	 */
+	if (F->n >= 2) {
+		double want = remainder(2 * F->phi[F->n - 1] - F->phi[F->n - 2],
+		    2 * M_PI);
+
+		best = k - 1;	/* before the first cut: the last gap's */
+		for (size_t lo = 0, hi = k; lo < hi; ) {
+			size_t mid = (lo + hi) / 2;
+
+			if (cuts[mid].th <= want) {
+				best = mid;
+				lo = mid + 1;
+			} else
+				hi = mid;
+		}
+	}
+	for (size_t j = 0; j < k; j++) {
+		size_t g = (best + j) % k;
+		double a = cuts[g].th, b = gap_end(cuts, k, g);
+		struct gap *gp = &gaps[g];
+
+		gp->tier = 0;
+		gp->live = (1u << SUBPARTS) - 1;
+		gp->lb = b - a >= 1e-12 ? inhib_first_bound(F, cuts, k, g, a, b,
+		    &gp->at) : HUGE_VAL;	/* no room */
+		if (gp->lb < emin)
+			search_gap(F, cuts, k, g, gp, &emin, &th, &gmin);
+	}
+	if (F->check)
+		inhib_check_bounds(F, cuts, k);
+	return th;
+}
