@@ -7,7 +7,7 @@ mkdir -p tests/out
 log=tests/out/run.log
 {
 	# A test program that dies is a failure, whatever it printed.
-	for t in test_model test_expr test_cyl test_collision test_area test_inhibition test_parastichy; do
+	for t in test_numfmt test_geometry test_planar test_organs test_scene test_expr test_cylindrical test_collision test_area test_inhibition test_parastichy; do
 		$RUN "$TESTBIN/$t" || echo "not ok - $t exited with status $?"
 	done
 	for t in golden limits set placeholders cli scenes compound pov blender gltf man docs; do

@@ -2,7 +2,8 @@
  * test_parastichy.c - the measured parastichies against what is known
  * independently of the measuring code:
  *  - Vogel's pattern: the rim pair equals the pair found by brute force
- *    over the closed form r = c sqrt(n), theta = n alpha, computed here;
+ *    over the closed form r = c sqrt(n), theta = n alpha, computed here,
+ *    and at the golden angle it is two consecutive Fibonacci numbers;
  *  - van Iterson's pairs (ABOP Table 4.1's (m, n)) come back from the
  *    cylindrical model's output;
  *  - on a collision structure, the zones along it equal those from a
@@ -421,6 +422,49 @@ inhibition_pairs(void)
 	scene_free(&sc);
 }
 
+static int
+is_fib_pair(int a, int b)
+{
+	int f0 = 1, f1 = 2;
+
+	while (f0 < a) {
+		int t = f0 + f1;
+
+		f0 = f1;
+		f1 = t;
+	}
+	return f0 == a && f1 == b;
+}
+
+/* Planar at the golden angle, the rim pair read from the last zone. */
+static void
+fibonacci(void)
+{
+	static const char *const counts[] = { "100", "1000", "5000" };
+
+	for (size_t i = 0; i < 3; i++) {
+		char text[128];
+		struct scene sc;
+		struct result res;
+		int pair[2] = { 0, 0 };
+		struct para_zone z[64];
+		size_t nz;
+
+		snprintf(text, sizeof(text), "model = \"planar\"; count = %s;",
+		    counts[i]);
+		if (run(text, &sc, &res) == 0 &&
+		    (nz = para_zones(&res, NULL, z, 64)) > 0) {
+			pair[0] = z[nz - 1].m;
+			pair[1] = z[nz - 1].n;
+		}
+		check(is_fib_pair(pair[0], pair[1]), "the rim pair of %s "
+		    "organs at the golden angle is two consecutive Fibonacci "
+		    "numbers (%d, %d)", counts[i], pair[0], pair[1]);
+		result_free(&res);
+		scene_free(&sc);
+	}
+}
+
 int
 main(void)
 {
@@ -430,6 +474,7 @@ main(void)
 	distichous();
 	inhibition_pairs();
 	vogel();
+	fibonacci();
 	van_iterson();
 	collision_zones();
 	inverse();
