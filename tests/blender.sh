@@ -1,7 +1,7 @@
 #!/bin/sh
 # blender.sh - the --blender script in every real Blender the suite
 # finds (BLENDERS: the system's blender and the Debian roots made by
-# tests/blender-root.sh, 3.4 to 5.x).  In each: run twice into a saved
+# tests/tools/blender-root.sh, 3.4 to 5.x).  In each: run twice into a saved
 # .blend holding the artist's own Seed object and Bract collection,
 # then hold the evaluated instances (object, position, rotation and
 # scale) against the CSV; the same for linked duplicates and for an

@@ -183,7 +183,7 @@ done
 
 # --- gltfpack, 0.21 and newer: commands or Debian roots. ---
 if [ -z "$GLTFPACKS" ]; then
-	skip "no gltfpack 0.21 or newer (Debian 13's, in tests/blender-root.sh's roots): gltfpack tests"
+	skip "no gltfpack 0.21 or newer (Debian 13's, in tests/tools/blender-root.sh's roots): gltfpack tests"
 fi
 for g in $GLTFPACKS; do
 	for c in $CASES; do
@@ -194,7 +194,7 @@ EOF
 		rm -f "$OUT/$name-packed.glb"
 		if [ -d "$g" ]; then
 			try "gltfpack of $g reads $name.glb: $n instances" \
-				sh tests/in-root.sh "$g" gltfpack -v -i "$OUT/$name.glb" -o "$OUT/$name-packed.glb"
+				sh tests/tools/in-root.sh "$g" gltfpack -v -i "$OUT/$name.glb" -o "$OUT/$name-packed.glb"
 		else
 			try "$g reads $name.glb: $n instances" "$g" -v -i "$OUT/$name.glb" -o "$OUT/$name-packed.glb"
 		fi

@@ -66,7 +66,7 @@ csv_close() {
 }
 
 # use_blender B: bl then runs Blender B, a command, or a Debian root made
-# by tests/blender-root.sh (through tests/blender-in-root.sh).
+# by tests/tools/blender-root.sh (through tests/tools/blender-in-root.sh).
 use_blender() {
 	if [ -d "$1" ]; then
 		BL_ROOT=$1
@@ -76,7 +76,7 @@ use_blender() {
 }
 bl() {
 	if [ -n "$BL_ROOT" ]; then
-		sh tests/blender-in-root.sh "$BL_ROOT" "$@"
+		sh tests/tools/blender-in-root.sh "$BL_ROOT" "$@"
 	else
 		"$BL_CMD" "$@"
 	fi

@@ -6,7 +6,7 @@
 set -u
 t=${1:-60}
 # libconfig 1.5 leaks on one kind of syntax error: not ours.
-LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
+LSAN_OPTIONS=suppressions=$(pwd)/tests/tools/lsan.supp:print_suppressions=0
 export LSAN_OPTIONS
 [ $# -gt 0 ] && shift
 for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; do

@@ -38,7 +38,7 @@ if [ "$BASE" != none ] && git rev-parse -q --verify "$BASE^{commit}" >/dev/null 
 	OLD=$OUT/old
 	rm -rf "$OLD" && mkdir -p "$OLD" &&
 		git archive "$BASE" | tar -x -C "$OLD" &&
-		cp tests/bench_*.c tests/clock.h tests/dense.h "$OLD/tests/" &&
+		cp tests/bench/bench_*.c tests/bench/clock.h tests/unit/dense.h "$OLD/tests/" &&
 		(cd "$OLD" && ./configure >/dev/null 2>&1 &&
 		make -s TESTS="bench_phases bench_inhibition bench_matrix" \
 		phyllo-export build/bench_phases build/bench_inhibition \
@@ -247,7 +247,7 @@ if [ -x /usr/bin/time ]; then
 fi
 
 # Blender: each one the suite finds (BLENDERS: the system's and the
-# Debian roots of tests/blender-root.sh), timed inside Blender.
+# Debian roots of tests/tools/blender-root.sh), timed inside Blender.
 : "${BLENDERS:=${BLENDER:-}}"
 if [ -n "$BLENDERS" ]; then
 	for M in 100000 1000000; do
