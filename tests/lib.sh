@@ -65,6 +65,12 @@ csv_close() {
 	' "$1" "$2"
 }
 
+# err_args FILE: the option a bad case of tests/regress/GROUP/ runs
+# with: the group's file "args" holds it, else --csv.
+err_args() {
+	cat "${1%/*}/args" 2>/dev/null || echo --csv
+}
+
 # use_blender B: bl then runs Blender B, a command, or a Debian root made
 # by tests/tools/blender-root.sh (through tests/tools/blender-in-root.sh).
 use_blender() {

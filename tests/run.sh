@@ -10,7 +10,7 @@ log=tests/out/run.log
 	for t in test_numfmt test_geometry test_planar test_organs test_scene test_expr test_cylindrical test_collision test_area test_inhibition test_parastichy; do
 		$RUN "$TESTBIN/$t" || echo "not ok - $t exited with status $?"
 	done
-	for t in golden limits set placeholders cli scenes compound pov blender gltf man docs; do
+	for t in regress limits set placeholders cli scenes compound pov blender gltf man docs; do
 		sh "tests/$t.sh"
 	done
 } 2>&1 | tee "$log" | grep -v '^ok - ' | grep -v '^ok - # SKIP'
