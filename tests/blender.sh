@@ -1,7 +1,7 @@
 #!/bin/sh
 # blender.sh - the --blender script in every real Blender the suite
 # finds (BLENDERS: the system's blender and the Debian roots made by
-# tests/blender-root.sh, 3.4 to 5.x).  In each: run twice into a saved
+# tests/tools/blender-root.sh, 3.4 to 5.x).  In each: run twice into a saved
 # .blend holding the artist's own Seed object and Bract collection,
 # then hold the evaluated instances (object, position, rotation and
 # scale) against the CSV; the same for linked duplicates and for an
@@ -43,14 +43,14 @@ for cfg in scenes/*.cfg; do
 done
 # A compound of three levels that grows over frames (the artist's own
 # Seed in artist.blend is its leaf).
-cp -r tests/compound/tree.cfg tests/compound/mid.cfg tests/compound/sub "$OUT/"
+cp -r tests/regress/compound/tree.cfg tests/regress/compound/mid.cfg tests/regress/compound/sub "$OUT/"
 px --blender -o "$OUT/tree.py" "$OUT/tree.cfg"
 px --csv --flatten -o "$OUT/tree.csv" "$OUT/tree.cfg"
 px --blender --frames 3 -o "$OUT/grow.py" "$OUT/tree.cfg"
 # One scene of every model, for the whole frame of every organ: a
 # cylinder's organs point u along the axis (Euler's gimbal lock), a
 # sphere's face every way.
-POSES="scenes/sunflower.cfg:planar tests/golden/cyl813.cfg:cylindrical
+POSES="scenes/sunflower.cfg:planar tests/regress/cylindrical/cyl813.cfg:cylindrical
 scenes/pinecone.cfg:cylindrical scenes/coneflower.cfg:collision
 scenes/dandelion.cfg:area scenes/transient.cfg:inhibition"
 for s in $POSES; do

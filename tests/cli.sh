@@ -5,7 +5,7 @@
 . tests/lib.sh
 
 SUN=scenes/sunflower.cfg
-GOOD=tests/golden/vogel90.cfg
+GOOD=tests/regress/planar/vogel90.cfg
 
 try "--help prints usage on stdout and exits 0" px --help
 assert "exit 0" '[ $rc -eq 0 ]'
@@ -131,7 +131,7 @@ assert "exit 1" '[ $rc -eq 1 ]'
 assert "message" 'grep -q "^phyllo-export: <stdin>:2: count -1 is out of range" $OUT/stderr'
 end
 
-try "the default name comes from the file name" px --info tests/golden/rings.cfg
+try "the default name comes from the file name" px --info tests/regress/planar/rings.cfg
 assert "name: Rings" 'grep -q "^name: Rings$" $OUT/stdout'
 end
 
@@ -159,7 +159,7 @@ assert "mode follows the umask" '[ "$(umask 022; px --csv -o $OUT/m.csv $GOOD; s
 end
 
 printf 'precious\n' >"$OUT/keep.csv"
-try "-o leaves its target alone on a scene error" px --csv -o "$OUT/keep.csv" tests/bad/count-negative.cfg
+try "-o leaves its target alone on a scene error" px --csv -o "$OUT/keep.csv" tests/regress/scene/count-negative.cfg
 assert "exit 1" '[ $rc -eq 1 ]'
 assert "target unchanged" '[ "$(cat $OUT/keep.csv)" = precious ]'
 assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.keep")" ]'

@@ -6,8 +6,8 @@
 # file a frame with f and F, or none at all when a frame fails.
 . tests/lib.sh
 
-# tests/compound/tree.cfg: three levels, no frame the identity.
-T=tests/compound
+# tests/regress/compound/tree.cfg: three levels, no frame the identity.
+T=tests/regress/compound
 cp -r "$T/tree.cfg" "$T/mid.cfg" "$T/sub" "$OUT/"
 mv "$OUT/tree.cfg" "$OUT/top.cfg"
 

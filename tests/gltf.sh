@@ -25,10 +25,10 @@ try "-o writes the same bytes" px --gltf -o "$OUT/sun.glb" scenes/sunflower.cfg
 assert "exit 0, the bytes of standard output" '[ $rc -eq 0 ] && cmp -s $OUT/sun.glb $OUT/sun-stdout.glb'
 end
 
-try "an object with no mesh: a placeholder, and one warning line naming it" px --gltf -o "$OUT/vogel.glb" tests/golden/vogel90.cfg
+try "an object with no mesh: a placeholder, and one warning line naming it" px --gltf -o "$OUT/vogel.glb" tests/regress/planar/vogel90.cfg
 assert "exit 0, written" '[ $rc -eq 0 ] && [ -s $OUT/vogel.glb ]'
 assert "one line" '[ $(wc -l <$OUT/stderr) -eq 1 ]'
-assert "names the object at its scene's line" 'grep -q "^phyllo-export: tests/golden/vogel90.cfg:[0-9]*: warning: organ object \"Seed\" has no mesh (organs.mesh names an OBJ file): a placeholder stands in$" $OUT/stderr'
+assert "names the object at its scene's line" 'grep -q "^phyllo-export: tests/regress/planar/vogel90.cfg:[0-9]*: warning: organ object \"Seed\" has no mesh (organs.mesh names an OBJ file): a placeholder stands in$" $OUT/stderr'
 end
 
 printf 'model = "planar";\ncount = "10 + 20 * F";\norgans = ( { object = "Seed"; mesh = "../../../tests/gltf/arrow.obj"; } );\n' >"$OUT/grow.cfg"
@@ -59,7 +59,7 @@ try "--gltf -o naming a mesh's material library is a usage error" px --gltf -o "
 refused "would replace $OUT/in/arrow.mtl, a material library of an organ mesh"
 end
 
-# Bad meshes beyond tests/bad-gltf: bytes a repository does not hold.
+# Bad meshes beyond tests/regress/gltf: bytes a repository does not hold.
 printf 'model = "planar";\ncount = 5;\norgans = ( { object = "A"; mesh = "bad.obj"; } );\n' >"$OUT/bad.cfg"
 printf 'v 0 0 0\nv 1 0 0\n\001\002\000\003\n' >"$OUT/bad.obj"
 try "an OBJ file with a NUL byte: refused at its line, nothing written" px --gltf "$OUT/bad.cfg"
@@ -100,7 +100,7 @@ coneflower:scenes/coneflower.cfg::RayFloret=scenes/organs/rayfloret.obj,ClosedFl
 turned:tests/gltf/turned.cfg::Arrow=tests/gltf/arrow.obj:250:
 pinecone:scenes/pinecone.cfg::::0,-5,2
 dandelion:scenes/dandelion.cfg::::
-tree:tests/compound/tree.cfg:--flatten:::"
+tree:tests/regress/compound/tree.cfg:--flatten:::"
 for c in $CASES; do
 	IFS=: read -r name cfg flat objs draws view <<EOF
 $c
@@ -183,7 +183,7 @@ done
 
 # --- gltfpack, 0.21 and newer: commands or Debian roots. ---
 if [ -z "$GLTFPACKS" ]; then
-	skip "no gltfpack 0.21 or newer (Debian 13's, in tests/blender-root.sh's roots): gltfpack tests"
+	skip "no gltfpack 0.21 or newer (Debian 13's, in tests/tools/blender-root.sh's roots): gltfpack tests"
 fi
 for g in $GLTFPACKS; do
 	for c in $CASES; do
@@ -194,7 +194,7 @@ EOF
 		rm -f "$OUT/$name-packed.glb"
 		if [ -d "$g" ]; then
 			try "gltfpack of $g reads $name.glb: $n instances" \
-				sh tests/in-root.sh "$g" gltfpack -v -i "$OUT/$name.glb" -o "$OUT/$name-packed.glb"
+				sh tests/tools/in-root.sh "$g" gltfpack -v -i "$OUT/$name.glb" -o "$OUT/$name-packed.glb"
 		else
 			try "$g reads $name.glb: $n instances" "$g" -v -i "$OUT/$name.glb" -o "$OUT/$name-packed.glb"
 		fi

@@ -65,8 +65,14 @@ csv_close() {
 	' "$1" "$2"
 }
 
+# err_args FILE: the option a bad case of tests/regress/GROUP/ runs
+# with: the group's file "args" holds it, else --csv.
+err_args() {
+	cat "${1%/*}/args" 2>/dev/null || echo --csv
+}
+
 # use_blender B: bl then runs Blender B, a command, or a Debian root made
-# by tests/blender-root.sh (through tests/blender-in-root.sh).
+# by tests/tools/blender-root.sh (through tests/tools/blender-in-root.sh).
 use_blender() {
 	if [ -d "$1" ]; then
 		BL_ROOT=$1
@@ -76,7 +82,7 @@ use_blender() {
 }
 bl() {
 	if [ -n "$BL_ROOT" ]; then
-		sh tests/blender-in-root.sh "$BL_ROOT" "$@"
+		sh tests/tools/blender-in-root.sh "$BL_ROOT" "$@"
 	else
 		"$BL_CMD" "$@"
 	fi

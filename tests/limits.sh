@@ -47,14 +47,17 @@ refused_under_limits() {
 }
 
 # --- Every bad scene, refused the same way under the limits. ---
-# (Under valgrind golden.sh runs them already, and each run costs a
-# second: the loops over every file are left to the plain runs.)
-[ -n "$RUN" ] && skip "every bad scene under the limits (golden.sh runs them under valgrind)"
-for cfg in tests/bad/*.cfg; do
+# (Under valgrind regress.sh runs them already, and each run costs a
+# second: the loops over every file are left to the plain runs.)  Each
+# runs with its group's option, as regress.sh runs it.
+[ -n "$RUN" ] && skip "every bad scene under the limits (regress.sh runs them under valgrind)"
+for cfg in tests/regress/*/*.cfg; do
 	[ -n "$RUN" ] && break
 	base=${cfg%.cfg}
+	[ -f "$base.err" ] || continue
 	printf 'precious\n' >"$OUT/target"
-	try "under the limits: bad $(basename "$base")" limited --csv -o "$OUT/target" "$cfg"
+	# shellcheck disable=SC2046
+	try "under the limits: bad ${base#tests/regress/}" limited $(err_args "$cfg") -o "$OUT/target" "$cfg"
 	assert "exit 1" '[ $rc -eq 1 ]'
 	assert "message as in $base.err" 'diff -u "$base.err" "$OUT/stderr" >"$OUT/diff"'
 	untouched
@@ -76,7 +79,7 @@ refused_under_limits "a NUL byte in a scene file" 1 "nul.cfg:3: NUL byte in scen
 	yes '// a line of padding in a template of more than a megabyte' | head -c 1100000
 } >"$OUT/huge.tmpl"
 refused_under_limits "a template over 1 MiB" 1 "huge.tmpl: template is larger than 1048576 bytes" \
-	--pov --template "$OUT/huge.tmpl" tests/golden/vogel90.cfg
+	--pov --template "$OUT/huge.tmpl" tests/regress/planar/vogel90.cfg
 
 # Organ meshes: 100 MB of junk is refused by its size, unread; so is
 # a material library over 4 MiB.
@@ -119,7 +122,7 @@ refused_under_limits "more than 256 parts in one structure" 1 "parts.cfg:260: mo
 	--csv "$OUT/parts.cfg"
 
 refused_under_limits "more than 100000 frames" 2 "give a whole number from 1 to 100000" \
-	--csv --frames 100001 tests/golden/vogel90.cfg
+	--csv --frames 100001 tests/regress/planar/vogel90.cfg
 
 # The largest scene the man page allows needs about 1.1 GB: under the
 # memory limit it is out of memory, cleanly.
@@ -179,7 +182,7 @@ try "--max-output 0 lifts the limit" px --max-output 0 --csv -o "$OUT/lifted.csv
 assert "exit 0, written" '[ $rc -eq 0 ] && [ -s $OUT/lifted.csv ]'
 end
 for v in 4X -1 abc 1KB ""; do
-	try "--max-output '$v' is a usage error" px --max-output "$v" --csv tests/golden/vogel90.cfg
+	try "--max-output '$v' is a usage error" px --max-output "$v" --csv tests/regress/planar/vogel90.cfg
 	refused "give a size in bytes"
 	end
 done
@@ -225,7 +228,7 @@ else
 fi
 
 # --- -o never names an input. ---
-cp tests/golden/vogel90.cfg "$OUT/my.cfg"
+cp tests/regress/planar/vogel90.cfg "$OUT/my.cfg"
 cp "$OUT/my.cfg" "$OUT/my.orig"
 mkdir -p "$OUT/dir"
 ln -sf my.cfg "$OUT/link.cfg"
@@ -237,15 +240,15 @@ for o in "$OUT/my.cfg" "$OUT/dir/../my.cfg" "$OUT/link.cfg" "$OUT/hard.cfg"; do
 	assert "nothing on stdout, no temporary file" '[ ! -s $OUT/stdout ] && [ -z "$(ls -A $OUT | grep "^\.")" ]'
 	end
 done
-cp tests/compound/tree.cfg tests/compound/mid.cfg "$OUT/"
-cp -r tests/compound/sub "$OUT/"
+cp tests/regress/compound/tree.cfg tests/regress/compound/mid.cfg "$OUT/"
+cp -r tests/regress/compound/sub "$OUT/"
 cp "$OUT/mid.cfg" "$OUT/mid.orig"
 try "-o naming a part's scene is a usage error" px --pov -o "$OUT/mid.cfg" "$OUT/tree.cfg"
 refused "would replace .*mid.cfg, the scene of organ object"
 assert "the part is as it was" 'cmp -s $OUT/mid.cfg $OUT/mid.orig'
 end
 cp templates/pov.tmpl "$OUT/my.tmpl"
-try "-o naming the template in use is a usage error" px --pov --template "$OUT/my.tmpl" -o "$OUT/my.tmpl" tests/golden/vogel90.cfg
+try "-o naming the template in use is a usage error" px --pov --template "$OUT/my.tmpl" -o "$OUT/my.tmpl" tests/regress/planar/vogel90.cfg
 refused "would replace $OUT/my.tmpl, the template in use"
 assert "the template is as it was" 'cmp -s $OUT/my.tmpl templates/pov.tmpl'
 end
@@ -260,14 +263,14 @@ end
 printf 'old\n' >"$OUT/real.inc"
 chmod 640 "$OUT/real.inc"
 ln -sf real.inc "$OUT/out.inc"
-try "-o through a symbolic link replaces its target, keeping its mode" px --pov -o "$OUT/out.inc" tests/golden/vogel90.cfg
+try "-o through a symbolic link replaces its target, keeping its mode" px --pov -o "$OUT/out.inc" tests/regress/planar/vogel90.cfg
 assert "exit 0" '[ $rc -eq 0 ]'
 assert "still a link" '[ -L $OUT/out.inc ]'
 assert "the target written" 'grep -q "^#declare Vogel90 = union" $OUT/real.inc'
 assert "mode 640 kept" '[ "$(stat -c %a $OUT/real.inc)" = 640 ]'
 end
 ln -sf nowhere.inc "$OUT/dangling.inc"
-try "-o through a dangling link makes its target" px --pov -o "$OUT/dangling.inc" tests/golden/vogel90.cfg
+try "-o through a dangling link makes its target" px --pov -o "$OUT/dangling.inc" tests/regress/planar/vogel90.cfg
 assert "exit 0, link kept, target made" '[ $rc -eq 0 ] && [ -L $OUT/dangling.inc ] && [ -s $OUT/nowhere.inc ]'
 end
 

@@ -209,7 +209,7 @@ done
 # takes the origin and the axes, against
 # the CSV in POV-Ray's axes (<x, z, y>): +x to u, +y to w, +z to v,
 # times the scale.
-for s in scenes/sunflower.cfg:planar tests/golden/cyl813.cfg:cylindrical \
+for s in scenes/sunflower.cfg:planar tests/regress/cylindrical/cyl813.cfg:cylindrical \
     scenes/pinecone.cfg:cylindrical "scenes/coneflower.cfg --set count=400:collision" \
     scenes/dandelion.cfg:area scenes/transient.cfg:inhibition; do
 	model=${s##*:}

@@ -1,17 +1,26 @@
 #!/bin/sh
 # run.sh - the whole suite: every script's "ok"/"not ok" lines, counted.
 # Ends with "N passed, N failed" and exits non-zero on any failure.
+# Nothing here is a list kept by hand: the unit tests are every
+# tests/unit/test_*.c (built into $TESTBIN by make), run first since
+# they are fast, then the scripts are every tests/*.sh but this one and
+# lib.sh, in the order of their names (each is independent: it writes
+# only its own tests/out/NAME).
 
 : "${TESTBIN:=build}"
 mkdir -p tests/out
 log=tests/out/run.log
 {
 	# A test program that dies is a failure, whatever it printed.
-	for t in test_model test_expr test_cyl test_collision test_area test_inhibition test_parastichy; do
+	for c in tests/unit/test_*.c; do
+		t=$(basename "$c" .c)
 		$RUN "$TESTBIN/$t" || echo "not ok - $t exited with status $?"
 	done
-	for t in golden limits set placeholders cli scenes compound pov blender gltf man docs; do
-		sh "tests/$t.sh"
+	for s in tests/*.sh; do
+		case $s in
+		tests/lib.sh|tests/run.sh) continue ;;
+		esac
+		sh "$s"
 	done
 } 2>&1 | tee "$log" | grep -v '^ok - ' | grep -v '^ok - # SKIP'
 

@@ -105,7 +105,8 @@ end
 
 # --- --settings: every setting, from the tables. ---
 if command -v python3 >/dev/null; then
-	for cfg in scenes/*.cfg tests/golden/*.cfg; do
+	for cfg in scenes/*.cfg tests/regress/*/*.cfg; do
+		[ -f "${cfg%.cfg}.err" ] && continue
 		px --settings "$cfg" >"$OUT/s.json" 2>"$OUT/stderr" || { bad="$bad; $cfg: exit $?"; continue; }
 		python3 - "$OUT/s.json" "$OUT/table" >>"$OUT/paths" <<'PY' || bad="$bad; $cfg: $(tail -1 "$OUT/paths")"
 import json, re, sys

@@ -127,6 +127,9 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	for (const struct writer *w = writers; w->name != NULL; w++) {
 		struct plan P;
 
+		/* --settings and --cfg write the scene, and size nothing. */
+		if (w->tmpl == NULL && w->bytes == NULL)
+			continue;
 		t = w->tmpl != NULL ? tmpl_builtin(w->tmpl, w->vars) : NULL;
 		plan_make(&P, w, t, compound_main(&c));
 		(void)plan_bytes(&P, w, t, TMPL_ALL, TO_FLATTEN);

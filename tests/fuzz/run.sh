@@ -6,14 +6,17 @@
 set -u
 t=${1:-60}
 # libconfig 1.5 leaks on one kind of syntax error: not ours.
-LSAN_OPTIONS=suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0
+LSAN_OPTIONS=suppressions=$(pwd)/tests/tools/lsan.supp:print_suppressions=0
 export LSAN_OPTIONS
 [ $# -gt 0 ] && shift
 for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; do
 	c=build-fuzz/corpus/$f
 	mkdir -p "$c"
 	case $f in
-	fuzz_scene) cp scenes/*.cfg tests/golden/*.cfg tests/bad/*.cfg "$c"/
+	# The regression cases' scenes but pov/ and gltf/'s, whose errors
+	# are the writers' (they were not seeds before the move either).
+	fuzz_scene) cp scenes/*.cfg $(ls tests/regress/*/*.cfg |
+		grep -v '^tests/regress/\(pov\|gltf\)/') "$c"/
 		# Naming the two parts the harness provides.
 		printf 'model = "planar";\ncount = "5 + F";\norgans = ( { object = ["P", "N"];\n  scene = ["part.cfg", "nested.cfg"]; scale = "r * f"; } );\n' >"$c/compound.cfg"
 		printf 'model = "planar";\ncount = "3 * F";\norgans = ( { object = "D"; scene = "deep.cfg"; tilt = "10 * f"; } );\n' >"$c/deep-compound.cfg"
@@ -21,9 +24,9 @@ for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; d
 		for s in scenes/*.cfg; do
 			{ echo 'count = 400;'; cat "$s"; } >"$c/count-${s##*/}"
 		done ;;
-	fuzz_expr) grep -ho '"[^"]*"' scenes/*.cfg tests/bad/expr-*.cfg |
+	fuzz_expr) grep -ho '"[^"]*"' scenes/*.cfg tests/regress/expr/*.cfg |
 		tr -d '"' | awk '{ f = sprintf("%s/seed%d", c, NR); printf "%s", $0 > f; close(f) }' c="$c" ;;
-	fuzz_template) cp templates/*.tmpl tests/bad-pov/*.tmpl "$c"/ ;;
+	fuzz_template) cp templates/*.tmpl tests/regress/pov/*.tmpl "$c"/ ;;
 	fuzz_set) i=0
 		# An argument, then a scene, as the harness reads them.
 		for a in 'count=300' 'planar.scale=0.05' 'organs.1.tilt="20 * f"' \
@@ -37,7 +40,7 @@ for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; d
 			done
 		done ;;
 	fuzz_obj) cp scenes/organs/*.obj scenes/organs/*.mtl tests/gltf/*.obj \
-		tests/gltf/*.mtl tests/bad-gltf/*.obj tests/bad-gltf/*.mtl "$c"/ ;;
+		tests/gltf/*.mtl tests/regress/gltf/*.obj tests/regress/gltf/*.mtl "$c"/ ;;
 	# Names of every kind: identifiers, the materials, and the bytes
 	# of the escaping test.
 	fuzz_json) grep -h '^usemtl\|^newmtl' scenes/organs/* tests/gltf/* |

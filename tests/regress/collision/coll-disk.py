@@ -1,0 +1,430 @@
+# Coll_disk: 202 organs placed by phyllo-export 0.1.0 from coll-disk.cfg
+# (model collision, divergence 99.5 degrees).
+#
+# Run it in Blender: "blender your.blend --python THIS_FILE", or open it
+# in the Text Editor and Run Script (one undo step).  It builds the
+# collection "Coll_disk": for each organ object a point cloud whose
+# geometry-nodes modifier puts an instance of that object on every organ.
+# An object or collection of that name in the .blend is used as it is:
+# built at the origin, outward along +X, up along +Z, of unit size.
+# Otherwise a placeholder icosphere of that name is made, hidden, in
+# "Coll_disk placeholders".  To swap an organ, pick another object in the
+# modifier's "Organ" field.  An organ made of another scene (a part) is
+# built once as a collection in the hidden "Coll_disk parts" and instanced,
+# unless the .blend has an object or collection of its name.  With
+# frames, each frame's structure is shown at its own frame alone, by
+# keyframed visibility.  Running the script again replaces what it made
+# and the artist left as it was, in the same collection: a placeholder
+# you edit (its mesh) or rename stays, as your own organ.
+
+import array
+import base64
+import difflib
+import hashlib
+import sys
+import time
+
+import bmesh
+import bpy
+
+NAME = "Coll_disk"
+# True: one linked duplicate per organ instead of instances (editable,
+# heavier; phyllo-export --blender-objects).
+LINKED_DUPLICATES = False
+# Frames of growth (phyllo-export --frames): frame F is shown at scene
+# frame FIRST_FRAME + F - 1, by keyframed visibility.
+FRAMES = 1
+FIRST_FRAME = bpy.context.scene.frame_start
+# Every structure, frame by frame; in each frame the parts (organs made
+# of another scene) come before the structures that place them, and the
+# structure NAME last.  Each is (frame, name, organ count, organ objects
+# with how many organs each, in the order of the data, data).  The data
+# is base64 of little-endian float32: every position (x, y, z), then
+# every rotation (Euler XYZ, radians), then every scale.
+STRUCTURES = [
+    (1, "Coll_disk", 202, [
+        ("Floret", 202),
+    ],
+     "AACAPwAAAAAAAAAAPQIpvjd9fD8AAAAAgQ1yv9+wpr4AAAAAJ070Pin6YL8AAAAAE7tJP/6bHT8AAAAANb48v3vzLD8AAAAAd20Lvx2zVr8AAAAAc8RqP9cozL4AAAAAYLp3Pk1leD8AAAAA+TV/vyqvoD0AAAAAtn6yPZ4Gf78AAAAAhth3P88xgD4AAAAAyT/Qvh3eaT8AAAAAi3lVv75LDb8AAAAAcpcuP/85O78AAAAAytcbPzQZSz8AAAAA2ghiv5Re8D4AAAAAwnWivlfFcr8AAAAAJdl8P1swIL4AAAAAvvkOvIH9fz8AAAAAXBx8v9TQMb4AAAAAvOiqPvRQcb8AAAAAFOdfP/c4+D4AAAAAH10fvwJZSD8AAAAAJUwrv70+Pr8AAAAAgOhXP3iMCb8AAAAA6Q3IPjWmaz8AAAAAPO14v00Mbz4AAAAAe9yOvVxgf78AAAAAtD9rPxE3tT0AAAAAiKx0vq5IZD8AAAAAsw5Xv78DxL4AAAAAbSgEP6LuQ78AAAAAx24rP/+uIj8AAAAAPr88vyk7Dj8AAAAAqEHaviaiUb8AAAAADsVgP3IQkr4AAAAANLsLPq69aT8AAAAACE1svx39g7wAAAAAokYsPiFhaL8AAAAAgxVeP/mpoT4AAAAAdsHovnmyTT8AAAAAE6s3v0y7FL8AAAAAgQExPwCaHL8AAAAAnHr6PtBsSD8AAAAAyVhav2ritD4AAAAALahUvpRHZr8AAAAA0qVkP0/BX70AAAAAEo+/vfLRYz8AAAAAYL5cv9vedL4AAAAAYJ/BPsqcT78AAAAAZsk8P+C/AT8AAAAA/SAfv2PIJD8AAAAAUEIIv70kOL8AAAAAeRtMP+n+z74AAAAAs8SJPgR5Wj8AAAAAfdhiv3MM/z0AAAAAM+O/PBv/ZL8AAAAAiI5SP122Iz4AAAAAwzyWvv3pSD8AAAAArcI5v2l/1r4AAAAA9G8IP/6CJb8AAAAAILkMPyvi"
+    "IT8AAAAArOM2v0Qm4D4AAAAAWrSgvvngRr8AAAAAymlRPwS0Ob4AAAAAdZ0zPSg0Vj8AAAAAbh5Vvy9Bwr0AAAAAi35sPjwwTr8AAAAAO5pBP/GvuD4AAAAAyA/2vsu0Lz8AAAAAlv0Yv+pXFr8AAAAAQ4gtPzwo/L4AAAAAtGq/Phv2Pz8AAAAACyBNvyvaej4AAAAABPvfvaKpVL8AAAAAiGhOP22n5jwAAAAAhLQkvk5jSj8AAAAA9dBAv8sHlL4AAAAA5KXRPrL0Mb8AAAAA3zYeP/HBBD8AAAAAwAwdvxkiBj8AAAAA877UvskIMb8AAAAAuilAP9ljl74AAAAAcsMrPlgFSj8AAAAAa1ZOv20kED0AAAAAiFzJPaP+TL8AAAAAwtQ2P86gWD4AAAAAJi6nvptiKz8AAAAABj0bv/913b4AAAAAZtUGP2bVBr8AAAAA/3XdPgY9Gz8AAAAAm2IrvyYupz4AAAAAzqBYvsLUNr8AAAAAHUM9P2Poub0AAAAAdxQFvYOAPj8AAAAAP4Q6v9CUHr4AAAAAfsWLPk5qMb8AAAAAmXIjPyNrxD4AAAAAk633vjL/ED8AAAAAUSP1vnASEr8AAAAAZ0wkP/GOwb4AAAAAcauIPrQEMj8AAAAA/9o6v48QGD4AAAAAxvPUvDyRPr8AAAAAv3EzP47+vD0AAAAAK6tTvo8VLT8AAAAABPohv2OEob4AAAAADcXUPhxtEr8AAAAAD7j9PtkXAT8AAAAAtUIUv1igzz4AAAAAutabvoRcI78AAAAAPPstP66NR74AAAAAZOmjPU3UMz8AAAAApb40vxGPF70AAAAALbIcPtezML8AAAAAMhcZPxRpdz4AAAAADYusvk3IDD8AAAAAvDn5vgCm2L4AAAAAs8/+Pt0M0r4AAAAAEB2lPhX+Dj8AAAAAQqgav8FLZz4AAAAAigr8vXYUIr8AAAAAlA4lPzRPirwAAAAAvNW3vbSBIz8AAAAA"
+    "uXgdvzaaRr4AAAAAguuVPgMeE78AAAAAR7oEPzRtxD4AAAAApIvtvh5l5T4AAAAA7Aq7vgsTCL8AAAAAyKQVP1uPi74AAAAAqn8wPsIbHz8AAAAAgjUkv5ASij0AAAAAb0chPTnOJL8AAAAAebIOP+XGAz4AAAAATy1gvoNNBz8AAAAA+WT4vs02m74AAAAAEhXCPsFe274AAAAALFS4Poqg4z4AAAAAqe3+vkU7kD4AAAAAOFtIvl6eCb8AAAAAk/8PPxSC1b0AAAAAJJQjPKptEj8AAAAAkNcQv58srb0AAAAA4wU1PmpIC78AAAAANtv0PqHtfj4AAAAABCGmvul13D4AAAAAlgS+vrM8yL4AAAAAXNrkPgBdmr4AAAAABfNkPhIx+z4AAAAA/FEFv2jkDj4AAAAAwqlTvUpjCb8AAAAAKML3PoOZCj0AAAAAy+rnvUqA8T4AAAAAp57kvi4WQr4AAAAAEXKFPrR30b4AAAAA65G4PgUwpj4AAAAACl/CviCcmj4AAAAAZtFwvjs52b4AAAAAIB7qPpPPJb4AAAAA7YKsPRmX9D4AAAAAnlr4vua1ijsAAAAAEGmbPUBO9b4AAAAAzBzZPiZKET4AAAAAAvdWviMlyj4AAAAAEKK1vjhfi74AAAAAS3CnPpkjnL4AAAAAh7l8Pqbpvj4AAAAAdybRvkg9Oj4AAAAAnErlvaym3b4AAAAAKPXEPjzaCb0AAAAAwDH4vLsZxT4AAAAAT9a/vk1Sv70AAAAAYKwdPttPtb4AAAAARNClPnRcVz4AAAAAKJKFvmDEkT4AAAAA4XFzvi/Mm74AAAAAPMCtPpitPL4AAAAAdLwAPj/wuj4AAAAAnv/CvreGgj0AAAAAppCjpMG1xb4AAAAABuWYPrGvTD0AAAAAD+HJvS2Tkj4AAAAAGzyIvl3wE74AAAAAZ+E+Pt1QdL4AAAAA+3VRPh+WZD4AAAAA4QKCvk/cKD4AAAAA4kH3vcop"
+    "jr4AAAAA9PaJPgSYib0AAAAA0n6yPPy/jT4AAAAArqWNvsZHxrwAAAAAhmeOPcOoib4AAAAALDI7Pqewpj0AAAAATTLivXHfKj4AAAAA4NwVvtO/C74AAAAAN5EiPgZ8+b0AAAAAeGbAPRftND4AAAAAjFJCvuwJgj0AAAAAjTgAvYNjSr4AAAAAu0TAPXvFVjoAAAAAqo2FvM1avT0AAAAART+1vbBdAL0AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAD/SN4/AAAAAAAAAAC31jPAAAAAAAAAAABvZIm/AAAAAAAAAAAfySk/AAAAAAAAAADHlhlAAAAAAAAAAABvZAnAAAAAAAAAAAB+/9G+AAAAAAAAAAAfyak/AAAAAAAAAAAPCURAAAAAAAAAAABO5L2/AAAAAAAAAADAkoE+AAAAAAAAAACvrf4/AAAAAAAAAABfpCPAAAAAAAAAAAB+/1G/AAAAAAAAAAB/kmo/AAAAAAAAAAAfySlAAAAAAAAAAAAuZPK/AAAAAAAAAAB82SC+AAAAAAAAAADPLco/AAAAAAAAAABO5D3AAAAAAAAAAACef52/AAAAAAAAAADAkgE/AAAAAAAAAAAviQ9AAAAAAAAAAAAHchPAAAAAAAAAAAAeNhG/AAAAAAAAAADwrZU/AAAAAAAAAAB3+zlAAAAAAAAAAAB+/9G/AAAAAAAAAAAJmMQ9AAAAAAAAAAB/kuo/AAAAAAAAAAD2sS3AAAAAAAAAAADdNXq/AAAAAAAAAAAgXEI/AAAAAAAAAACHux9AAAAAAAAAAACvPwPAAAAAAAAAAAB82aC+AAAAAAAAAACgErY/AAAAAAAAAADm8UfAAAAAAAAAAADOmrG/AAAAAAAAAADCuLI+AAAAAAAAAACYewVAAAAAAAAAAACefx3AAAAAAAAAAAB9bDm/AAAAAAAAAADAkoE/AAAAAAAAAADf7S9AAAAAAAAAAACtGua/AAAAAAAAAADdNXq9"
+    "AAAAAAAAAABQd9Y/AAAAAAAAAACOvzfAAAAAAAAAAAAeNpG/AAAAAAAAAADBJRo/AAAAAAAAAADwrRVAAAAAAAAAAABGTQ3AAAAAAAAAAAA6RvG+AAAAAAAAAABw96E/AAAAAAAAAAA3IEBAAAAAAAAAAAD9tcW/AAAAAAAAAAAJmEQ+AAAAAAAAAAAA3PY/AAAAAAAAAAA2jSfAAAAAAAAAAADcomG/AAAAAAAAAAAh71o/AAAAAAAAAABI4CVAAAAAAAAAAADdNfq/AAAAAAAAAADzZl++AAAAAAAAAAAgXMI/AAAAAAAAAAAmzUHAAAAAAAAAAABNUaW/AAAAAAAAAADF3uM+AAAAAAAAAABYoAtAAAAAAAAAAADeWhfAAAAAAAAAAAB82SC/AAAAAAAAAABB3I0/AAAAAAAAAACgEjZAAAAAAAAAAAAt0dm/AAAAAAAAAAA1+g49AAAAAAAAAADQwOI/AAAAAAAAAADOmjHAAAAAAAAAAACd7IS/AAAAAAAAAADCuDI/AAAAAAAAAACw0htAAAAAAAAAAACGKAfAAAAAAAAAAAA3IMC+AAAAAAAAAADxQK4/AAAAAAAAAAD4REZAAAAAAAAAAAB9bLm/AAAAAAAAAAAHcpM+AAAAAAAAAADAkgFAAAAAAAAAAAB2aCHAAAAAAAAAAADbD0m/AAAAAAAAAAAignM/AAAAAAAAAAAIBSxAAAAAAAAAAABc7O2/AAAAAAAAAADdNfq9AAAAAAAAAAChpc4/AAAAAAAAAABmqDvAAAAAAAAAAADNB5m/AAAAAAAAAABjggo/AAAAAAAAAAAYxRFAAAAAAAAAAAAeNhHAAAAAAAAAAAB7Rgi/AAAAAAAAAADBJZo/AAAAAAAAAABgNzxAAAAAAAAAAACsh82/AAAAAAAAAACSCgY+AAAAAAAAAABRCu8/AAAAAAAAAAAOdivAAAAAAAAAAAA6RnG/AAAAAAAAAADDS0s/AAAAAAAA"
+    "AABw9yFAAAAAAAAAAADGAwHAAAAAAAAAAAA1+o6+AAAAAAAAAABxiro/AAAAAAAAAAD9tUXAAAAAAAAAAAD8Iq2/AAAAAAAAAAAJmMQ+AAAAAAAAAACAtwdAAAAAAAAAAAC2QxvAAAAAAAAAAADafDC/AAAAAAAAAACSCoY/AAAAAAAAAADIKTJAAAAAAAAAAADcouG/AAAAAAAAAABQd9a8AAAAAAAAAAAh79o/AAAAAAAAAAClgzXAAAAAAAAAAABMvoy/AAAAAAAAAABlFSM/AAAAAAAAAADY6RdAAAAAAAAAAABeEQvAAAAAAAAAAADzZt++AAAAAAAAAABCb6Y/AAAAAAAAAAAgXEJAAAAAAAAAAAAsPsG/AAAAAAAAAACWVmg+AAAAAAAAAADRU/s/AAAAAAAAAABNUSXAAAAAAAAAAAA4s1i/AAAAAAAAAADF3mM/AAAAAAAAAAAwHChAAAAAAAAAAAALvvW/AAAAAAAAAABmqDu+AAAAAAAAAADy08Y/AAAAAAAAAAA9kT/AAAAAAAAAAAB82aC/AAAAAAAAAAALvvU+AAAAAAAAAABB3A1AAAAAAAAAAAD1HhXAAAAAAAAAAADY6Re/AAAAAAAAAAASVJI/AAAAAAAAAACITjhAAAAAAAAAAABbWdW/AAAAAAAAAAA1+o49AAAAAAAAAACiOOc/AAAAAAAAAADlXi/AAAAAAAAAAADMdIC/AAAAAAAAAABmqDs/AAAAAAAAAACZDh5AAAAAAAAAAACd7ATAAAAAAAAAAADxQK6+AAAAAAAAAADCuLI/AAAAAAAAAADggEhAAAAAAAAAAACr9LS/AAAAAAAAAABNUaU+AAAAAAAAAACpzgNAAAAAAAAAAACNLB/AAAAAAAAAAAA3IEC/AAAAAAAAAADGcXw/AAAAAAAAAADxQC5AAAAAAAAAAACLdOm/AAAAAAAAAADCuLK9AAAAAAAAAAByHdM/AAAAAAAAAAB9bDnA"
+    "AAAAAAAAAAD7j5S/AAAAAAAAAAAHchM/AAAAAAAAAAABARRAAAAAAAAAAAA1+g7AAAAAAAAAAACvrf6+AAAAAAAAAACTnZ4/AAAAAAAAAABJcz5AAAAAAAAAAADbD8m/AAAAAAAAAAAfySk+AAAAAAAAAAAigvM/AAAAAAAAAAAlOinAAAAAAAAAAACWVmi/AAAAAAAAAABnO1Q/AAAAAAAAAABZMyRAAAAAAAAAAAC6j/2/AAAAAAAAAADdNXq+AAAAAAAAAABDAr8/AAAAAAAAAAAVekPAAAAAAAAAAAArq6i/AAAAAAAAAABQd9Y+AAAAAAAAAABp8wlAAAAAAAAAAADNBxnAAAAAAAAAAAA2jSe/AAAAAAAAAABjgoo/AAAAAAAAAACxZTRAAAAAAAAAAAAKK92/AAAAAAAAAAA1+g48AAAAAAAAAADzZt8/AAAAAAAAAAC9RzPAj8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/C"
+    "dT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PY/CdT2PwnU9j8J1PQ=="),
+]
+
+TAG = "phyllo_export"   # custom property on everything this script makes
+OLDEST = (3, 4, 0)      # the first Blender this script is tested in
+
+
+def api_missing():
+    """What this Blender lacks of what the script uses, or None."""
+    if bpy.app.version < OLDEST:
+        return "Blender %d.%d or newer (point-cloud attributes and the " \
+            "geometry nodes this script builds)" % OLDEST[:2]
+    for node in ("GeometryNodeInstanceOnPoints", "GeometryNodeObjectInfo",
+                 "GeometryNodeCollectionInfo",
+                 "GeometryNodeInputNamedAttribute"):
+        if not hasattr(bpy.types, node):
+            return "the geometry node %s" % node
+    if "attributes" not in bpy.types.Mesh.bl_rna.properties:
+        return "mesh attributes (Mesh.attributes)"
+    return None
+
+
+# Where Blender's API changed, one helper each, named for the version.
+
+def add_socket(group, name, in_out, socket_type):
+    if hasattr(group, "interface"):
+        # Blender 4.0 moved group sockets to the tree's interface.
+        return group.interface.new_socket(name=name, in_out=in_out,
+                                          socket_type=socket_type)
+    sockets = group.inputs if in_out == "INPUT" else group.outputs
+    return sockets.new(socket_type, name)
+
+
+def set_modifier_input(mod, identifier, value):
+    inputs = getattr(getattr(mod, "properties", None), "inputs", None)
+    if inputs is not None:
+        # Blender 5.2 gave the modifier's inputs RNA properties; they
+        # are no longer custom properties of the modifier.
+        getattr(inputs, identifier).value = value
+    else:
+        mod[identifier] = value
+
+
+def offer_as_modifier(group):
+    # Blender 4.0 lists only groups flagged as modifiers in the picker.
+    if hasattr(group, "is_modifier"):
+        group.is_modifier = True
+
+
+def output_of_type(node, socket_type):
+    # By type, not name: Collection Info's "Geometry" became "Instances"
+    # in Blender 3.5, and 3.x hides the outputs of other data types.
+    return next(s for s in node.outputs
+                if s.type == socket_type and s.enabled)
+
+
+def unpack(data, n):
+    values = array.array("f")
+    values.frombytes(base64.b64decode(data))
+    if sys.byteorder == "big":
+        values.byteswap()
+    return values[0:3 * n], values[3 * n:6 * n], values[6 * n:7 * n]
+
+
+def walk(collection):
+    yield collection
+    for child in collection.children:
+        yield from walk(child)
+
+
+def ours(data):
+    """Whether this script made data (and the artist has it not)."""
+    return data is not None and data.get(TAG) == NAME
+
+
+def structure_collection():
+    """The collection an earlier run built, found by its mark: one of
+    the artist's that has the structure's name is not ours."""
+    return next((c for c in bpy.data.collections
+                 if ours(c) and c.get("phyllo_structure")), None)
+
+
+def mesh_print(mesh):
+    """A fingerprint of a mesh's vertices and faces, so that a placeholder
+    the artist has modelled is told from the one this script made."""
+    co = array.array("f", [0.0]) * (3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    return "%d %d %s" % (len(mesh.vertices), len(mesh.polygons),
+                         hashlib.sha1(co.tobytes()).hexdigest()[:16])
+
+
+def edited(ob):
+    """Whether the artist made a placeholder their own: renamed it, gave
+    it another mesh, or edited the mesh."""
+    return (ob.name != ob.get("phyllo_organ") or not ours(ob.data) or
+            mesh_print(ob.data) != ob.data.get("phyllo_print"))
+
+
+def remove_previous():
+    """Empty the collection of an earlier run of what it made and the
+    artist left as it was; keep the collection itself (its settings,
+    its links from other scenes), the artist's own objects and
+    collections in it, and placeholders the artist edited or renamed,
+    which become the artist's organs.  Returns the collection (or
+    None) and the names of the placeholders kept."""
+    top = structure_collection()
+    if top is None:
+        return None, []
+    kept = []
+    meshes, groups = set(), set()
+    collections = list(walk(top))
+    for collection in collections:
+        for ob in list(collection.objects):
+            if not ours(ob):
+                continue        # the artist's own: left where it is
+            if ob.get("phyllo_organ") and edited(ob):
+                del ob[TAG]     # now the artist's organ, kept as theirs
+                if ours(ob.data):
+                    del ob.data[TAG]
+                kept.append(ob.name)
+                continue
+            if ours(ob.data):
+                meshes.add(ob.data)
+            for mod in ob.modifiers:
+                if mod.type == "NODES" and mod.node_group is not None:
+                    groups.add(mod.node_group)
+            bpy.data.objects.remove(ob)
+    for collection in reversed(collections):
+        # Ours, unless it holds what the artist keeps (a placeholder
+        # they edited, an object or collection of theirs put in it).
+        if collection is not top and ours(collection) and \
+                not collection.objects and not collection.children:
+            bpy.data.collections.remove(collection)
+    for mesh in meshes:
+        if mesh.users == 0:
+            bpy.data.meshes.remove(mesh)
+    for group in groups:
+        if group.users == 0 and ours(group):
+            bpy.data.node_groups.remove(group)
+    return top, kept
+
+
+def placeholder(name, collection):
+    """A unit icosphere standing in for an organ the .blend lacks; the
+    artist may edit it in place, and a later run keeps it."""
+    bm = bmesh.new()
+    bmesh.ops.create_icosphere(bm, subdivisions=2, radius=1.0)
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    mesh[TAG] = NAME
+    mesh["phyllo_print"] = mesh_print(mesh)
+    ob = bpy.data.objects.new(name, mesh)
+    ob[TAG] = NAME
+    ob["phyllo_organ"] = name
+    collection.objects.link(ob)
+    return ob
+
+
+def instancer_group(kind):
+    """Points in, instances of the "Organ" input out, placed by the
+    rotation and scale attributes."""
+    group = bpy.data.node_groups.new(NAME + " " + kind.lower(),
+                                     "GeometryNodeTree")
+    group[TAG] = NAME
+    offer_as_modifier(group)
+    add_socket(group, "Geometry", "INPUT", "NodeSocketGeometry")
+    organ = add_socket(group, "Organ", "INPUT",
+                       "NodeSocketObject" if kind == "OBJECT"
+                       else "NodeSocketCollection")
+    add_socket(group, "Geometry", "OUTPUT", "NodeSocketGeometry")
+    nodes, links = group.nodes, group.links
+    inp = nodes.new("NodeGroupInput")
+    out = nodes.new("NodeGroupOutput")
+    if kind == "OBJECT":
+        info = nodes.new("GeometryNodeObjectInfo")
+        info.transform_space = "ORIGINAL"
+        info.inputs["As Instance"].default_value = True
+        links.new(inp.outputs["Organ"], info.inputs["Object"])
+    else:
+        info = nodes.new("GeometryNodeCollectionInfo")
+        info.transform_space = "ORIGINAL"
+        links.new(inp.outputs["Organ"], info.inputs["Collection"])
+    rot = nodes.new("GeometryNodeInputNamedAttribute")
+    rot.data_type = "FLOAT_VECTOR"
+    rot.inputs["Name"].default_value = "phyllo_rotation"
+    scale = nodes.new("GeometryNodeInputNamedAttribute")
+    scale.data_type = "FLOAT"
+    scale.inputs["Name"].default_value = "phyllo_scale"
+    place = nodes.new("GeometryNodeInstanceOnPoints")
+    links.new(inp.outputs["Geometry"], place.inputs["Points"])
+    links.new(output_of_type(info, "GEOMETRY"), place.inputs["Instance"])
+    rotation = output_of_type(rot, "VECTOR")
+    if place.inputs["Rotation"].type == "ROTATION":
+        # A rotation socket (Blender 4.x) takes Euler angles through this
+        # node; linked straight, a vector is not read as Euler angles on
+        # every version.
+        euler = nodes.new("FunctionNodeEulerToRotation")
+        links.new(rotation, euler.inputs["Euler"])
+        rotation = euler.outputs["Rotation"]
+    links.new(rotation, place.inputs["Rotation"])
+    links.new(output_of_type(scale, "VALUE"), place.inputs["Scale"])
+    links.new(place.outputs["Instances"], out.inputs["Geometry"])
+    return group, organ.identifier
+
+
+def points(name, co, rot, scale, first, n):
+    mesh = bpy.data.meshes.new(name)
+    mesh[TAG] = NAME
+    mesh.vertices.add(n)
+    mesh.vertices.foreach_set("co", co[3 * first:3 * (first + n)])
+    attr = mesh.attributes.new("phyllo_rotation", "FLOAT_VECTOR", "POINT")
+    attr.data.foreach_set("vector", rot[3 * first:3 * (first + n)])
+    attr = mesh.attributes.new("phyllo_scale", "FLOAT", "POINT")
+    attr.data.foreach_set("value", scale[first:first + n])
+    mesh.update()
+    return mesh
+
+
+def hidden_collection(top, suffix):
+    """A child of top, hidden: what the organs instance, not the scene
+    (the one of an earlier run, where it holds what the artist kept)."""
+    for child in top.children:
+        if ours(child) and child.name == NAME + " " + suffix:
+            return child
+    collection = bpy.data.collections.new(NAME + " " + suffix)
+    collection[TAG] = NAME
+    top.children.link(collection)
+    collection.hide_viewport = collection.hide_render = True
+    return collection
+
+
+def show_only_at(objects, frame):
+    """Keyframe objects visible at frame F alone (of FRAMES)."""
+    at = FIRST_FRAME + frame - 1
+    for ob in objects:
+        for hidden, when in ((frame != 1, FIRST_FRAME), (False, at),
+                             (True, at + 1)):
+            if when == at + 1 and frame == FRAMES:
+                continue
+            ob.hide_viewport = ob.hide_render = hidden
+            ob.keyframe_insert("hide_viewport", frame=when)
+            ob.keyframe_insert("hide_render", frame=when)
+
+
+class Builder:
+    """Builds every structure, each part once per frame, and finds the
+    object or collection each organ name stands for."""
+
+    def __init__(self, top):
+        if top is None:
+            top = bpy.data.collections.new(NAME)
+            top[TAG] = NAME
+            top["phyllo_structure"] = True
+            bpy.context.scene.collection.children.link(top)
+        self.top = top
+        self.placeholders = self.parts = None
+        self.made = {}          # (frame, part name): its collection
+        self.groups = {}
+        self.organs = 0
+        self.stand_ins = []     # organs a placeholder stands in for
+
+    def organ(self, frame, name):
+        """What organ name is: a part we built, the artist's own object
+        or collection, or a placeholder."""
+        if (frame, name) in self.made:
+            return self.made[(frame, name)], "COLLECTION"
+        if bpy.data.objects.get(name) is not None:
+            return bpy.data.objects[name], "OBJECT"
+        if bpy.data.collections.get(name) is not None:
+            return bpy.data.collections[name], "COLLECTION"
+        for ob in bpy.data.objects:
+            # A placeholder the artist renamed stands for its organ still.
+            if ob.get("phyllo_organ") == name and not ours(ob):
+                return ob, "OBJECT"
+        if self.placeholders is None:
+            self.placeholders = hidden_collection(self.top, "placeholders")
+        self.stand_ins.append(name)
+        return placeholder(name, self.placeholders), "OBJECT"
+
+    def structure(self, frame, name, count, objects, data):
+        main = name == NAME
+        if main:
+            into = self.top
+        elif (bpy.data.objects.get(name) is not None or
+              bpy.data.collections.get(name) is not None):
+            return          # the artist's own stands for this part
+        else:
+            if self.parts is None:
+                self.parts = hidden_collection(self.top, "parts")
+            into = bpy.data.collections.new(
+                name if FRAMES == 1 else "%s %d" % (name, frame))
+            into[TAG] = NAME
+            self.parts.children.link(into)
+            self.made[(frame, name)] = into
+        label = name if FRAMES == 1 else "%s %d" % (name, frame)
+        co, rot, scale = unpack(data, count)
+        first, built = 0, []
+        for organ_name, n in objects:
+            organ, kind = self.organ(frame, organ_name)
+            if LINKED_DUPLICATES:
+                built += duplicates(into, organ, kind, label, organ_name,
+                                    co, rot, scale, first, n)
+            else:
+                if kind not in self.groups:
+                    self.groups[kind] = instancer_group(kind)
+                group, socket = self.groups[kind]
+                ob_name = label + "." + organ_name
+                ob = bpy.data.objects.new(ob_name, points(
+                    ob_name, co, rot, scale, first, n))
+                ob[TAG] = NAME
+                into.objects.link(ob)
+                mod = ob.modifiers.new("phyllo-export", "NODES")
+                mod.node_group = group
+                set_modifier_input(mod, socket, organ)
+                built.append(ob)
+            first += n
+        if main:
+            self.organs += count
+            if FRAMES > 1:
+                show_only_at(built, frame)
+
+
+def main():
+    start = time.time()
+    top, kept = remove_previous()
+    for name in kept:
+        print("phyllo-export: kept %r, a placeholder you edited, as your "
+              "own organ" % name)
+    builder = Builder(top)
+    for structure in STRUCTURES:
+        builder.structure(*structure)
+    print("phyllo-export: built collection %r: %d organs over %d "
+          "frame(s) in %.2f s%s" % (
+              NAME, builder.organs, FRAMES, time.time() - start,
+              "; placeholders for " + ", ".join(builder.stand_ins)
+              if builder.stand_ins else ""))
+    # A name near one the artist has is likely a slip of the scene's.
+    theirs = [d.name for d in list(bpy.data.objects) +
+              list(bpy.data.collections) if not ours(d)]
+    for name in builder.stand_ins:
+        near = difflib.get_close_matches(name, theirs, n=1, cutoff=0.75)
+        if near:
+            print("phyllo-export: no object or collection %r in the "
+                  ".blend (did you mean %r?)" % (name, near[0]))
+
+
+def duplicates(into, organ, kind, label, organ_name, co, rot, scale, first,
+               n):
+    """One object per organ sharing the organ's data (linked duplicates)."""
+    made = []
+    for i in range(first, first + n):
+        ob = bpy.data.objects.new("%s.%s.%d" % (label, organ_name, i),
+                                  organ.data if kind == "OBJECT" else None)
+        if kind == "COLLECTION":
+            ob.instance_type = "COLLECTION"
+            ob.instance_collection = organ
+        ob[TAG] = NAME
+        ob.location = co[3 * i:3 * i + 3]
+        ob.rotation_euler = rot[3 * i:3 * i + 3]
+        ob.scale = (scale[i],) * 3
+        into.objects.link(ob)
+        made.append(ob)
+    return made
+
+
+missing = api_missing()
+if missing:
+    # One line, not a traceback: what this Blender lacks.  Exit only
+    # from a command line (-b); in the Text Editor that would quit Blender.
+    print("phyllo-export: this script needs %s; this is Blender %s"
+          % (missing, bpy.app.version_string), file=sys.stderr)
+    if bpy.app.background:
+        sys.exit(1)
+else:
+    main()

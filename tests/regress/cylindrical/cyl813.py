@@ -1,0 +1,424 @@
+# Cyl813: 50 organs placed by phyllo-export 0.1.0 from cyl813.cfg
+# (model cylindrical, divergence 137.507764 degrees).
+#
+# Run it in Blender: "blender your.blend --python THIS_FILE", or open it
+# in the Text Editor and Run Script (one undo step).  It builds the
+# collection "Cyl813": for each organ object a point cloud whose
+# geometry-nodes modifier puts an instance of that object on every organ.
+# An object or collection of that name in the .blend is used as it is:
+# built at the origin, outward along +X, up along +Z, of unit size.
+# Otherwise a placeholder icosphere of that name is made, hidden, in
+# "Cyl813 placeholders".  To swap an organ, pick another object in the
+# modifier's "Organ" field.  An organ made of another scene (a part) is
+# built once as a collection in the hidden "Cyl813 parts" and instanced,
+# unless the .blend has an object or collection of its name.  With
+# frames, each frame's structure is shown at its own frame alone, by
+# keyframed visibility.  Running the script again replaces what it made
+# and the artist left as it was, in the same collection: a placeholder
+# you edit (its mesh) or rename stays, as your own organ.
+
+import array
+import base64
+import difflib
+import hashlib
+import sys
+import time
+
+import bmesh
+import bpy
+
+NAME = "Cyl813"
+# True: one linked duplicate per organ instead of instances (editable,
+# heavier; phyllo-export --blender-objects).
+LINKED_DUPLICATES = False
+# Frames of growth (phyllo-export --frames): frame F is shown at scene
+# frame FIRST_FRAME + F - 1, by keyframed visibility.
+FRAMES = 1
+FIRST_FRAME = bpy.context.scene.frame_start
+# Every structure, frame by frame; in each frame the parts (organs made
+# of another scene) come before the structures that place them, and the
+# structure NAME last.  Each is (frame, name, organ count, organ objects
+# with how many organs each, in the order of the data, data).  The data
+# is base64 of little-endian float32: every position (x, y, z), then
+# every rotation (Euler XYZ, radians), then every scale.
+STRUCTURES = [
+    (1, "Cyl813", 50, [
+        ("Organ", 50),
+    ],
+     "AAAAQAAAAAAAAAAANcS8v+/srD86EVw9QgwzPhEF/786Edw9psKbP2spyz/sDCU+Lxb8v8Fcsr46EVw+WQDYPwJnib/Eiok+2+oEvxo59z/sDKU+Afxrv9Iv478Tj8A+XHfwP8KiLz86Edw+6aHsv11bQz9hk/c+WAJZPzTe57/Eigk/vDsZPxpE9D/YSxc/e37dvz9cgL/sDCU/bAf6P2nf277/zTI/rzuTv4ps0T8Tj0A/TpiDvpXg/b8mUE4/CcDDP3r6pD86EVw/Ccj/v+I8qT1O0mk/2HW1P8iTtL9hk3c/PjO9vQy6/z86qoI/hAWkv3mNxL/Eiok/urb9Px2MiD5Oa5A/xiPSv7I1kj/YS5c/ub/gPgTC+b9iLJ4/fo5+Pxwe3j/sDKU/rePzv16dG7917as/AGXoP42+Vr//zbI/zKlFvzQn7D+Jrrk/nkktv0zk8L8Tj8A/xpviP7oybj+db8c/WYv3v/iAAj8mUM4/WHSKPxhU17+wMNU/83CtPhpN/D86Edw/SGbKv+S/nL/E8eI/PSD/P+IXKb5O0uk/Jditv63ruz/YsvA/9NkfPDj//79hk/c/qwCsP5ebvT/rc/4/V+j+v4v/PL46qgJAUuvLP3XEmr9/GgZAeUe3vrvd+z/EiglA11iIv0ir2L8J+wxAW+X2P+9TBz9OaxBAe8Ljv9nDaT+T2xNA1foxP/UI8L/YSxdAvAtBPy0b7T8dvBpA/lXnv9BEW79iLB5ACqP0PyzZFr+nnCFAd3CBv4Hd3D/sDCVAwv3Wvk9L+r8wfShAAAAAgNsPyT8AAAAA/5gZwNsPyT8AAAAAbdu9P9sPyT8AAAAAI61qv9sPyT8AAAAAbds9QNsPyT8AAAAAtwkRP9sPyT8AAAAAI63qv9sPyT8AAAAAJDADQNsPyT8AAAAA2kazvtsPyT8AAAAA2wEwwNsPyT8AAAAAtwmRP9sPyT8AAAAASCiiv9sPyT8AAAAAknInQNsP"
+    "yT8AAAAAJ5ldPtsPyT8AAAAAbb8LwNsPyT8AAAAAko7ZP9sPyT8AAAAA2kYzv9sPyT8AAAAAtmpGwNsPyT8AAAAAAXBIP9sPyT8AAAAA/vnOv9sPyT8AAAAAtwkRQNsPyT8AAAAAjPQIvtsPyT8AAAAASCgiwNsPyT8AAAAA3LysP9sPyT8AAAAAI3WGv9sPyT8AAAAAJEw1QNsPyT8AAAAAJ5ndPtsPyT8AAAAAtcv7v9sPyT8AAAAAt0H1P9sPyT8AAAAAH8H3vtsPyT8AAAAAI5E4wNsPyT8AAAAAStZ/P9sPyT8AAAAA2kazv9sPyT8AAAAASeMeQNsPyT8AAAAAOEmpPdsPyT8AAAAAtk4UwNsPyT8AAAAAAXDIP9sPyT8AAAAA/INVv9sPyT8AAAAAtyVDQNsPyT8AAAAA3jImP9sPyT8AAAAAkBjgv9sPyT8AAAAAbnoIQNsPyT8AAAAAjPSIvtsPyT8AAAAAkbcqwNsPyT8AAAAASp6bP9sPyT8AAAAAtZOXv9sPyT8AAAAA3LwsQNsPyT8AAAAA4h6ZPtsPyT8AAAAAI3UGwNsPyT8AAAAAJSPkP9sPyT8AAAAA3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j7eWdI+3lnSPt5Z0j4="),
+]
+
+TAG = "phyllo_export"   # custom property on everything this script makes
+OLDEST = (3, 4, 0)      # the first Blender this script is tested in
+
+
+def api_missing():
+    """What this Blender lacks of what the script uses, or None."""
+    if bpy.app.version < OLDEST:
+        return "Blender %d.%d or newer (point-cloud attributes and the " \
+            "geometry nodes this script builds)" % OLDEST[:2]
+    for node in ("GeometryNodeInstanceOnPoints", "GeometryNodeObjectInfo",
+                 "GeometryNodeCollectionInfo",
+                 "GeometryNodeInputNamedAttribute"):
+        if not hasattr(bpy.types, node):
+            return "the geometry node %s" % node
+    if "attributes" not in bpy.types.Mesh.bl_rna.properties:
+        return "mesh attributes (Mesh.attributes)"
+    return None
+
+
+# Where Blender's API changed, one helper each, named for the version.
+
+def add_socket(group, name, in_out, socket_type):
+    if hasattr(group, "interface"):
+        # Blender 4.0 moved group sockets to the tree's interface.
+        return group.interface.new_socket(name=name, in_out=in_out,
+                                          socket_type=socket_type)
+    sockets = group.inputs if in_out == "INPUT" else group.outputs
+    return sockets.new(socket_type, name)
+
+
+def set_modifier_input(mod, identifier, value):
+    inputs = getattr(getattr(mod, "properties", None), "inputs", None)
+    if inputs is not None:
+        # Blender 5.2 gave the modifier's inputs RNA properties; they
+        # are no longer custom properties of the modifier.
+        getattr(inputs, identifier).value = value
+    else:
+        mod[identifier] = value
+
+
+def offer_as_modifier(group):
+    # Blender 4.0 lists only groups flagged as modifiers in the picker.
+    if hasattr(group, "is_modifier"):
+        group.is_modifier = True
+
+
+def output_of_type(node, socket_type):
+    # By type, not name: Collection Info's "Geometry" became "Instances"
+    # in Blender 3.5, and 3.x hides the outputs of other data types.
+    return next(s for s in node.outputs
+                if s.type == socket_type and s.enabled)
+
+
+def unpack(data, n):
+    values = array.array("f")
+    values.frombytes(base64.b64decode(data))
+    if sys.byteorder == "big":
+        values.byteswap()
+    return values[0:3 * n], values[3 * n:6 * n], values[6 * n:7 * n]
+
+
+def walk(collection):
+    yield collection
+    for child in collection.children:
+        yield from walk(child)
+
+
+def ours(data):
+    """Whether this script made data (and the artist has it not)."""
+    return data is not None and data.get(TAG) == NAME
+
+
+def structure_collection():
+    """The collection an earlier run built, found by its mark: one of
+    the artist's that has the structure's name is not ours."""
+    return next((c for c in bpy.data.collections
+                 if ours(c) and c.get("phyllo_structure")), None)
+
+
+def mesh_print(mesh):
+    """A fingerprint of a mesh's vertices and faces, so that a placeholder
+    the artist has modelled is told from the one this script made."""
+    co = array.array("f", [0.0]) * (3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    return "%d %d %s" % (len(mesh.vertices), len(mesh.polygons),
+                         hashlib.sha1(co.tobytes()).hexdigest()[:16])
+
+
+def edited(ob):
+    """Whether the artist made a placeholder their own: renamed it, gave
+    it another mesh, or edited the mesh."""
+    return (ob.name != ob.get("phyllo_organ") or not ours(ob.data) or
+            mesh_print(ob.data) != ob.data.get("phyllo_print"))
+
+
+def remove_previous():
+    """Empty the collection of an earlier run of what it made and the
+    artist left as it was; keep the collection itself (its settings,
+    its links from other scenes), the artist's own objects and
+    collections in it, and placeholders the artist edited or renamed,
+    which become the artist's organs.  Returns the collection (or
+    None) and the names of the placeholders kept."""
+    top = structure_collection()
+    if top is None:
+        return None, []
+    kept = []
+    meshes, groups = set(), set()
+    collections = list(walk(top))
+    for collection in collections:
+        for ob in list(collection.objects):
+            if not ours(ob):
+                continue        # the artist's own: left where it is
+            if ob.get("phyllo_organ") and edited(ob):
+                del ob[TAG]     # now the artist's organ, kept as theirs
+                if ours(ob.data):
+                    del ob.data[TAG]
+                kept.append(ob.name)
+                continue
+            if ours(ob.data):
+                meshes.add(ob.data)
+            for mod in ob.modifiers:
+                if mod.type == "NODES" and mod.node_group is not None:
+                    groups.add(mod.node_group)
+            bpy.data.objects.remove(ob)
+    for collection in reversed(collections):
+        # Ours, unless it holds what the artist keeps (a placeholder
+        # they edited, an object or collection of theirs put in it).
+        if collection is not top and ours(collection) and \
+                not collection.objects and not collection.children:
+            bpy.data.collections.remove(collection)
+    for mesh in meshes:
+        if mesh.users == 0:
+            bpy.data.meshes.remove(mesh)
+    for group in groups:
+        if group.users == 0 and ours(group):
+            bpy.data.node_groups.remove(group)
+    return top, kept
+
+
+def placeholder(name, collection):
+    """A unit icosphere standing in for an organ the .blend lacks; the
+    artist may edit it in place, and a later run keeps it."""
+    bm = bmesh.new()
+    bmesh.ops.create_icosphere(bm, subdivisions=2, radius=1.0)
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    mesh[TAG] = NAME
+    mesh["phyllo_print"] = mesh_print(mesh)
+    ob = bpy.data.objects.new(name, mesh)
+    ob[TAG] = NAME
+    ob["phyllo_organ"] = name
+    collection.objects.link(ob)
+    return ob
+
+
+def instancer_group(kind):
+    """Points in, instances of the "Organ" input out, placed by the
+    rotation and scale attributes."""
+    group = bpy.data.node_groups.new(NAME + " " + kind.lower(),
+                                     "GeometryNodeTree")
+    group[TAG] = NAME
+    offer_as_modifier(group)
+    add_socket(group, "Geometry", "INPUT", "NodeSocketGeometry")
+    organ = add_socket(group, "Organ", "INPUT",
+                       "NodeSocketObject" if kind == "OBJECT"
+                       else "NodeSocketCollection")
+    add_socket(group, "Geometry", "OUTPUT", "NodeSocketGeometry")
+    nodes, links = group.nodes, group.links
+    inp = nodes.new("NodeGroupInput")
+    out = nodes.new("NodeGroupOutput")
+    if kind == "OBJECT":
+        info = nodes.new("GeometryNodeObjectInfo")
+        info.transform_space = "ORIGINAL"
+        info.inputs["As Instance"].default_value = True
+        links.new(inp.outputs["Organ"], info.inputs["Object"])
+    else:
+        info = nodes.new("GeometryNodeCollectionInfo")
+        info.transform_space = "ORIGINAL"
+        links.new(inp.outputs["Organ"], info.inputs["Collection"])
+    rot = nodes.new("GeometryNodeInputNamedAttribute")
+    rot.data_type = "FLOAT_VECTOR"
+    rot.inputs["Name"].default_value = "phyllo_rotation"
+    scale = nodes.new("GeometryNodeInputNamedAttribute")
+    scale.data_type = "FLOAT"
+    scale.inputs["Name"].default_value = "phyllo_scale"
+    place = nodes.new("GeometryNodeInstanceOnPoints")
+    links.new(inp.outputs["Geometry"], place.inputs["Points"])
+    links.new(output_of_type(info, "GEOMETRY"), place.inputs["Instance"])
+    rotation = output_of_type(rot, "VECTOR")
+    if place.inputs["Rotation"].type == "ROTATION":
+        # A rotation socket (Blender 4.x) takes Euler angles through this
+        # node; linked straight, a vector is not read as Euler angles on
+        # every version.
+        euler = nodes.new("FunctionNodeEulerToRotation")
+        links.new(rotation, euler.inputs["Euler"])
+        rotation = euler.outputs["Rotation"]
+    links.new(rotation, place.inputs["Rotation"])
+    links.new(output_of_type(scale, "VALUE"), place.inputs["Scale"])
+    links.new(place.outputs["Instances"], out.inputs["Geometry"])
+    return group, organ.identifier
+
+
+def points(name, co, rot, scale, first, n):
+    mesh = bpy.data.meshes.new(name)
+    mesh[TAG] = NAME
+    mesh.vertices.add(n)
+    mesh.vertices.foreach_set("co", co[3 * first:3 * (first + n)])
+    attr = mesh.attributes.new("phyllo_rotation", "FLOAT_VECTOR", "POINT")
+    attr.data.foreach_set("vector", rot[3 * first:3 * (first + n)])
+    attr = mesh.attributes.new("phyllo_scale", "FLOAT", "POINT")
+    attr.data.foreach_set("value", scale[first:first + n])
+    mesh.update()
+    return mesh
+
+
+def hidden_collection(top, suffix):
+    """A child of top, hidden: what the organs instance, not the scene
+    (the one of an earlier run, where it holds what the artist kept)."""
+    for child in top.children:
+        if ours(child) and child.name == NAME + " " + suffix:
+            return child
+    collection = bpy.data.collections.new(NAME + " " + suffix)
+    collection[TAG] = NAME
+    top.children.link(collection)
+    collection.hide_viewport = collection.hide_render = True
+    return collection
+
+
+def show_only_at(objects, frame):
+    """Keyframe objects visible at frame F alone (of FRAMES)."""
+    at = FIRST_FRAME + frame - 1
+    for ob in objects:
+        for hidden, when in ((frame != 1, FIRST_FRAME), (False, at),
+                             (True, at + 1)):
+            if when == at + 1 and frame == FRAMES:
+                continue
+            ob.hide_viewport = ob.hide_render = hidden
+            ob.keyframe_insert("hide_viewport", frame=when)
+            ob.keyframe_insert("hide_render", frame=when)
+
+
+class Builder:
+    """Builds every structure, each part once per frame, and finds the
+    object or collection each organ name stands for."""
+
+    def __init__(self, top):
+        if top is None:
+            top = bpy.data.collections.new(NAME)
+            top[TAG] = NAME
+            top["phyllo_structure"] = True
+            bpy.context.scene.collection.children.link(top)
+        self.top = top
+        self.placeholders = self.parts = None
+        self.made = {}          # (frame, part name): its collection
+        self.groups = {}
+        self.organs = 0
+        self.stand_ins = []     # organs a placeholder stands in for
+
+    def organ(self, frame, name):
+        """What organ name is: a part we built, the artist's own object
+        or collection, or a placeholder."""
+        if (frame, name) in self.made:
+            return self.made[(frame, name)], "COLLECTION"
+        if bpy.data.objects.get(name) is not None:
+            return bpy.data.objects[name], "OBJECT"
+        if bpy.data.collections.get(name) is not None:
+            return bpy.data.collections[name], "COLLECTION"
+        for ob in bpy.data.objects:
+            # A placeholder the artist renamed stands for its organ still.
+            if ob.get("phyllo_organ") == name and not ours(ob):
+                return ob, "OBJECT"
+        if self.placeholders is None:
+            self.placeholders = hidden_collection(self.top, "placeholders")
+        self.stand_ins.append(name)
+        return placeholder(name, self.placeholders), "OBJECT"
+
+    def structure(self, frame, name, count, objects, data):
+        main = name == NAME
+        if main:
+            into = self.top
+        elif (bpy.data.objects.get(name) is not None or
+              bpy.data.collections.get(name) is not None):
+            return          # the artist's own stands for this part
+        else:
+            if self.parts is None:
+                self.parts = hidden_collection(self.top, "parts")
+            into = bpy.data.collections.new(
+                name if FRAMES == 1 else "%s %d" % (name, frame))
+            into[TAG] = NAME
+            self.parts.children.link(into)
+            self.made[(frame, name)] = into
+        label = name if FRAMES == 1 else "%s %d" % (name, frame)
+        co, rot, scale = unpack(data, count)
+        first, built = 0, []
+        for organ_name, n in objects:
+            organ, kind = self.organ(frame, organ_name)
+            if LINKED_DUPLICATES:
+                built += duplicates(into, organ, kind, label, organ_name,
+                                    co, rot, scale, first, n)
+            else:
+                if kind not in self.groups:
+                    self.groups[kind] = instancer_group(kind)
+                group, socket = self.groups[kind]
+                ob_name = label + "." + organ_name
+                ob = bpy.data.objects.new(ob_name, points(
+                    ob_name, co, rot, scale, first, n))
+                ob[TAG] = NAME
+                into.objects.link(ob)
+                mod = ob.modifiers.new("phyllo-export", "NODES")
+                mod.node_group = group
+                set_modifier_input(mod, socket, organ)
+                built.append(ob)
+            first += n
+        if main:
+            self.organs += count
+            if FRAMES > 1:
+                show_only_at(built, frame)
+
+
+def main():
+    start = time.time()
+    top, kept = remove_previous()
+    for name in kept:
+        print("phyllo-export: kept %r, a placeholder you edited, as your "
+              "own organ" % name)
+    builder = Builder(top)
+    for structure in STRUCTURES:
+        builder.structure(*structure)
+    print("phyllo-export: built collection %r: %d organs over %d "
+          "frame(s) in %.2f s%s" % (
+              NAME, builder.organs, FRAMES, time.time() - start,
+              "; placeholders for " + ", ".join(builder.stand_ins)
+              if builder.stand_ins else ""))
+    # A name near one the artist has is likely a slip of the scene's.
+    theirs = [d.name for d in list(bpy.data.objects) +
+              list(bpy.data.collections) if not ours(d)]
+    for name in builder.stand_ins:
+        near = difflib.get_close_matches(name, theirs, n=1, cutoff=0.75)
+        if near:
+            print("phyllo-export: no object or collection %r in the "
+                  ".blend (did you mean %r?)" % (name, near[0]))
+
+
+def duplicates(into, organ, kind, label, organ_name, co, rot, scale, first,
+               n):
+    """One object per organ sharing the organ's data (linked duplicates)."""
+    made = []
+    for i in range(first, first + n):
+        ob = bpy.data.objects.new("%s.%s.%d" % (label, organ_name, i),
+                                  organ.data if kind == "OBJECT" else None)
+        if kind == "COLLECTION":
+            ob.instance_type = "COLLECTION"
+            ob.instance_collection = organ
+        ob[TAG] = NAME
+        ob.location = co[3 * i:3 * i + 3]
+        ob.rotation_euler = rot[3 * i:3 * i + 3]
+        ob.scale = (scale[i],) * 3
+        into.objects.link(ob)
+        made.append(ob)
+    return made
+
+
+missing = api_missing()
+if missing:
+    # One line, not a traceback: what this Blender lacks.  Exit only
+    # from a command line (-b); in the Text Editor that would quit Blender.
+    print("phyllo-export: this script needs %s; this is Blender %s"
+          % (missing, bpy.app.version_string), file=sys.stderr)
+    if bpy.app.background:
+        sys.exit(1)
+else:
+    main()
