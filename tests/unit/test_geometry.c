@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "geometry/geometry.h"
 #include "models/model.h"
 #include "check.h"
 

@@ -20,7 +20,7 @@ run(const char *text, struct scene *sc, struct result *res)
 	*res = (struct result){0};
 	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
 		return -1;
-	return model_run(sc, res);
+	return scene_run(sc, res, NULL);
 }
 
 static double
