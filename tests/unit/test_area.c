@@ -22,6 +22,7 @@
 #include "models/model.h"
 #include "scene/scene.h"
 #include "check.h"
+#include "scene_text.h"
 
 #define R	1.3
 #define H	1.7
@@ -31,11 +32,8 @@ run(const char *cfg, struct scene *sc, struct result *res)
 {
 	char text[1024];
 
-	*res = (struct result){0};
 	snprintf(text, sizeof(text), "model = \"area\";\n%s\n", cfg);
-	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
-		return -1;
-	return scene_run(sc, res, NULL);
+	return scene_text_run(text, sc, res);
 }
 
 static double

@@ -12,6 +12,7 @@
 #include "models/model.h"
 #include "scene/scene.h"
 #include "check.h"
+#include "scene_text.h"
 #include "geometry/vec.h"
 
 
@@ -149,15 +150,6 @@ test_encyclic(void)
 	    "encyclic numbers of (8, 13) are (3, 5)");
 }
 
-static int
-run(const char *text, struct scene *sc, struct result *res)
-{
-	*res = (struct result){0};
-	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
-		return -1;
-	return scene_run(sc, res, NULL);
-}
-
 static void
 test_model(void)
 {
@@ -165,7 +157,7 @@ test_model(void)
 	struct result r;
 	double h, d, e = 0, ef = 0;
 
-	if (run("model = \"cylindrical\"; count = 300;\n"
+	if (scene_text_run("model = \"cylindrical\"; count = 300;\n"
 	    "cylindrical = { radius = 2.5; parastichies = [5, 8]; };",
 	    &sc, &r) != 0) {
 		check(0, "the (5, 8) scene loads");
@@ -197,7 +189,7 @@ test_model(void)
 	scene_free(&sc);
 
 	/* A taper: the rise and size follow the local radius. */
-	if (run("model = \"cylindrical\"; count = 400;\n"
+	if (scene_text_run("model = \"cylindrical\"; count = 400;\n"
 	    "cylindrical = { radius = \"1.5 - t\"; parastichies = [8, 13]; };",
 	    &sc, &r) == 0) {
 		double worst = 0, wn = 0;

@@ -14,16 +14,7 @@
 #include "models/model.h"
 #include "scene/scene.h"
 #include "check.h"
-
-/* Load a scene from text and run its model; 0 on success. */
-static int
-run(const char *text, struct scene *sc, struct result *res)
-{
-	*res = (struct result){0};
-	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
-		return -1;
-	return scene_run(sc, res, NULL);
-}
+#include "scene_text.h"
 
 static void
 done(struct scene *sc, struct result *res)
@@ -45,7 +36,7 @@ test_organ_ranges(void)
 	struct result res;
 	int wrong = 0;
 
-	if (run("model = \"planar\"; count = 630;\n"
+	if (scene_text_run("model = \"planar\"; count = 630;\n"
 	    "organs = ( { object = \"Seed\"; to = 440; },\n"
 	    "  { object = \"Ray\"; from = 441; to = 565; },\n"
 	    "  { object = \"Petal\"; from = 566; } );", &sc, &res) != 0) {
@@ -63,7 +54,7 @@ test_organ_ranges(void)
 	done(&sc, &res);
 
 	/* Entries past the last organ are dropped, to is clipped. */
-	check(run("model = \"planar\"; count = 100;\n"
+	check(scene_text_run("model = \"planar\"; count = 100;\n"
 	    "organs = ( { object = \"A\"; to = 440; },\n"
 	    "  { object = \"B\"; from = 441; } );", &sc, &res) == 0 &&
 	    strcmp(object_of(&res, 99), "A") == 0,
@@ -79,7 +70,7 @@ tally(const char *text, long counts[3], unsigned *choices)
 	struct result res;
 
 	counts[0] = counts[1] = counts[2] = 0;
-	if (run(text, &sc, &res) != 0)
+	if (scene_text_run(text, &sc, &res) != 0)
 		return;
 	for (size_t n = 0; n < res.count; n++) {
 		const char *o = object_of(&res, n);
@@ -150,9 +141,9 @@ test_transforms(void)
 	struct result base, res;
 	double ep = 0, ef = 0, es = 0, eh = 0;
 
-	if (run("model = \"planar\"; count = 200; planar = { dome = 1; };",
+	if (scene_text_run("model = \"planar\"; count = 200; planar = { dome = 1; };",
 	    &sc, &base) != 0 ||
-	    run("model = \"planar\"; count = 200; planar = { dome = 1; };\n"
+	    scene_text_run("model = \"planar\"; count = 200; planar = { dome = 1; };\n"
 	    "organs = ( { altitude = \"-0.1 * t\"; tilt = \"n % 90\";\n"
 	    "  roll = 30; scale = \"2 * r + s\"; } );", &sc2, &res) != 0) {
 		check(0, "organs: transform scenes load");

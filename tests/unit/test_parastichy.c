@@ -21,15 +21,7 @@
 #include "analysis/parastichy.h"
 #include "scene/scene.h"
 #include "check.h"
-
-static int
-run(const char *text, struct scene *sc, struct result *res)
-{
-	*res = (struct result){0};
-	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
-		return -1;
-	return scene_run(sc, res, NULL);
-}
+#include "scene_text.h"
 
 /* Brute force: organ i's nearest earlier neighbour turning either way. */
 static void
@@ -106,7 +98,7 @@ vogel(void)
 		}
 		snprintf(text, sizeof(text), "model = \"planar\"; count = %d;",
 		    N);
-		if (run(text, &sc, &res) != 0) {
+		if (scene_text_run(text, &sc, &res) != 0) {
 			check(0, "Vogel %d: runs", N);
 			scene_free(&sc);
 			free(p);
@@ -146,7 +138,7 @@ van_iterson(void)
 		snprintf(text, sizeof(text), "model = \"cylindrical\"; count = "
 		    "600; cylindrical = { parastichies = [%d, %d]; };",
 		    pairs[k][0], pairs[k][1]);
-		if (run(text, &sc, &res) != 0) {
+		if (scene_text_run(text, &sc, &res) != 0) {
 			bad++;
 			scene_free(&sc);
 			continue;
@@ -185,7 +177,7 @@ collision_zones(void)
 	double (*p)[3];
 	size_t nz, nb, same = 1;
 
-	if (run(text, &sc, &res) != 0) {
+	if (scene_text_run(text, &sc, &res) != 0) {
 		check(0, "collision zones: runs");
 		scene_free(&sc);
 		return;
@@ -255,7 +247,7 @@ inverse(void)
 
 			snprintf(text, sizeof(text), c[k].fmt, want[w][0],
 			    want[w][1]);
-			if (run(text, &sc, &res) == 0 &&
+			if (scene_text_run(text, &sc, &res) == 0 &&
 			    (nz = para_zones(&res, NULL, z, 64)) > 0)
 				b = c[k].rim_last ? &z[nz - 1] : &z[0];
 			check(b != NULL && b->m == want[w][0] && b->n ==
@@ -296,7 +288,7 @@ nearest_wide(void)
 	struct result res;
 	size_t bad = 0, checked = 0;
 
-	if (run("model = \"inhibition\"; count = 10000; inhibition = { "
+	if (scene_text_run("model = \"inhibition\"; count = 10000; inhibition = { "
 	    "growth = 0.05; radii = \"grown\"; };", &sc, &res) != 0) {
 		check(0, "wide radii: runs");
 		scene_free(&sc);
@@ -363,7 +355,7 @@ distichous(void)
 	struct para_zone z[64];
 	size_t nz = 0;
 
-	if (run("model = \"planar\"; count = 60; divergence = 180;", &sc,
+	if (scene_text_run("model = \"planar\"; count = 60; divergence = 180;", &sc,
 	    &res) == 0)
 		nz = para_zones(&res, NULL, z, 64);
 	check(res.count == 60 && nz == 0, "alternate leaves (180 degrees): %zu "
@@ -390,7 +382,7 @@ inhibition_pairs(void)
 	size_t nz = 0, bad = 0, pairs = 0;
 	char what[128] = "";
 
-	if (run("model = \"inhibition\"; count = 600;", &sc, &res) == 0)
+	if (scene_text_run("model = \"inhibition\"; count = 600;", &sc, &res) == 0)
 		nz = para_zones(&res, NULL, z, 64);
 	for (size_t k = 0; k < nz; k++) {
 		long long from = z[k].from, to = k + 1 < nz ? z[k + 1].from :
@@ -452,7 +444,7 @@ fibonacci(void)
 
 		snprintf(text, sizeof(text), "model = \"planar\"; count = %s;",
 		    counts[i]);
-		if (run(text, &sc, &res) == 0 &&
+		if (scene_text_run(text, &sc, &res) == 0 &&
 		    (nz = para_zones(&res, NULL, z, 64)) > 0) {
 			pair[0] = z[nz - 1].m;
 			pair[1] = z[nz - 1].n;

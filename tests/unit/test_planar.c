@@ -11,17 +11,8 @@
 #include "models/model.h"
 #include "scene/scene.h"
 #include "check.h"
+#include "scene_text.h"
 #include "geometry/vec.h"
-
-/* Load a scene from text and run its model; 0 on success. */
-static int
-run(const char *text, struct scene *sc, struct result *res)
-{
-	*res = (struct result){0};
-	if (scene_load_buffer(sc, "test.cfg", text, strlen(text)) != 0)
-		return -1;
-	return scene_run(sc, res, NULL);
-}
 
 static double
 angle_diff(double a, double b)
@@ -39,7 +30,7 @@ test_planar_vogel(void)
 	double er = 0, ea = 0, ef = 0, eu = 0;
 	const double c = 0.7, alpha = 137.3;
 
-	if (run("model = \"planar\"; count = 5000; divergence = 137.3;\n"
+	if (scene_text_run("model = \"planar\"; count = 5000; divergence = 137.3;\n"
 	    "planar = { scale = 0.7; };", &sc, &res) != 0) {
 		check(0, "planar: scene loads");
 		return;
@@ -80,7 +71,7 @@ test_planar_variants(void)
 	struct result res;
 	double ez = 0, en = 0, ef = 0;
 
-	if (run("model = \"planar\"; count = 300;\n"
+	if (scene_text_run("model = \"planar\"; count = 300;\n"
 	    "planar = { outer = 2.5; inner = 0.5; exponent = 0.6; };",
 	    &sc, &res) == 0) {
 		const struct organ *o = res.organs;
@@ -98,7 +89,7 @@ test_planar_variants(void)
 	result_free(&res);
 	scene_free(&sc);
 
-	if (run("model = \"planar\"; count = 800;\n"
+	if (scene_text_run("model = \"planar\"; count = 800;\n"
 	    "planar = { scale = 0.1; dome = 0.6; };", &sc, &res) == 0) {
 		double rim = 0.1 * sqrt(799.0);
 
