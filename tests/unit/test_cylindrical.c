@@ -1,8 +1,8 @@
 /*
- * test_cyl.c - the cylindrical model against ABOP's Table 4.1 and the
- * properties that define it: organ 0 touches organs m and n at exactly
- * d, nothing is nearer, and at the ends of the admissible range a
- * third parastichy touches.  Prints "ok"/"not ok" lines.
+ * test_cylindrical.c - the cylindrical model against ABOP's Table 4.1
+ * and the properties that define it: organ 0 touches organs m and n at
+ * exactly d, nothing is nearer, and at the ends of the admissible range
+ * a third parastichy touches.  Prints "ok"/"not ok" lines.
  */
 #include <math.h>
 #include <stdio.h>
