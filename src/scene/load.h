@@ -1,7 +1,8 @@
 /*
  * load.h - what the scene loader's files share: struct load, one load
  * under way, and the functions that cross them (scene.c loads a file
- * as a whole, scene_values.c reads one value by its row's type).
+ * as a whole, scene_tables.c walks a settings table over its struct,
+ * scene_values.c reads one value by its row's type).
  */
 #ifndef SCENE_LOAD_H
 #define SCENE_LOAD_H
@@ -44,7 +45,11 @@ int	 load_model(struct load *, const config_setting_t *,
 int	 load_setting_as(struct load *, const config_setting_t *,
 	    const char *path, const struct row *, void *base);
 
-/* scene.c */
+/* scene_tables.c */
+void	 load_defaults(const struct table *, void *base);
+void	 load_paths(const struct table *, void *base, const char *path);
+void	 load_free_settings(const struct table *, void *base);
+void	 load_record(struct load *, const config_setting_t *);
 int	 load_group(struct load *, const config_setting_t *,
 	    const char *path, const struct table *, void *base);
 int	 load_ranges(struct load *, const config_setting_t *,
