@@ -1,9 +1,10 @@
 /*
  * settings.h - how settings are described: each group of the scene
  * file (the top level, a model's group, a receptacle, an organs entry)
- * is one table of rows over one C struct.  The loader in scene.c walks
- * the tables, so parsing, defaults, validation, freeing and the man
- * page's list cannot drift apart.
+ * is one table of rows over one C struct.  The loader walks the tables
+ * (scene_tables.c, each value by its type in scene_values.c), so
+ * parsing, defaults, validation, freeing and the man page's list cannot
+ * drift apart.
  */
 #ifndef SETTINGS_H
 #define SETTINGS_H

@@ -1,0 +1,268 @@
+/*
+ * scene_tables.c - a settings table walked over the struct it describes:
+ * defaults, paths and freeing; a group's members read, an unknown name
+ * answered with the nearest known one; the organs entries; and each
+ * setting kept as written, for --settings.
+ */
+#include <libconfig.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/cfgtext.h"
+#include "diag.h"
+#include "mem.h"
+#include "models/model.h"
+#include "scene/load.h"
+#include "scene/scene.h"
+#include "scene/settings.h"
+#include "scene/suggest.h"
+
+static struct group_at *
+at_of(const struct table *tab, void *base)
+{
+	return (struct group_at *)((char *)base + tab->at);
+}
+
+static int *
+given_of(const struct table *tab, void *base)
+{
+	return (int *)((char *)base + tab->given);
+}
+
+/* Numbers and choices take their defaults, in nested groups too. */
+void
+load_defaults(const struct table *tab, void *base)
+{
+	for (size_t i = 0; i < tab->n; i++) {
+		const struct row *r = &tab->rows[i];
+		char *dst = (char *)base + r->off;
+
+		if (r->type == T_INT)
+			*(long long *)dst = (long long)r->def;
+		else if (r->type == T_FLOAT)
+			*(double *)dst = r->def;
+		else if (r->type == T_CHOICE)
+			*(int *)dst = (int)r->def;
+		else if (r->type == T_VEC3)
+			for (int k = 0; k < 3; k++)
+				((double *)dst)[k] = r->def;
+		else if (r->type == T_GROUP)
+			load_defaults(r->sub, dst);
+	}
+}
+
+/*
+ * Name the struct base described by tab path, and its nested groups
+ * path.name: where they are not written, a message about them still
+ * says where ("give area.receptacle.profile or ...").
+ */
+void
+load_paths(const struct table *tab, void *base, const char *path)
+{
+	snprintf(at_of(tab, base)->path, PATH_LEN, "%s", path);
+	for (size_t i = 0; i < tab->n; i++) {
+		const struct row *r = &tab->rows[i];
+		char sub[PATH_LEN];
+
+		if (r->type != T_GROUP)
+			continue;
+		snprintf(sub, sizeof(sub), "%s.%s", path, r->name);
+		load_paths(r->sub, (char *)base + r->off, sub);
+	}
+}
+
+/* Free what the settings of a struct own, in nested groups too. */
+void
+load_free_settings(const struct table *tab, void *base)
+{
+	for (size_t i = 0; i < tab->n; i++) {
+		const struct row *r = &tab->rows[i];
+		char *dst = (char *)base + r->off;
+
+		if (r->type == T_EXPR)
+			expr_free(((struct expr_setting *)dst)->e);
+		else if (r->type == T_POINTS)
+			free(((struct point_list *)dst)->p);
+		else if (r->type == T_GROUP)
+			load_free_settings(r->sub, dst);
+	}
+}
+
+/* An entry's scene or mesh files: one for each of its objects. */
+static int
+files_per_name(const struct load *L, const struct organ_range *rg,
+    const struct file_list *fl, int id, const char *path, const char *name)
+{
+	if (fl->v == NULL || fl->n == rg->nnames)
+		return 0;
+	diag(ST_SCENE, L->file, rg->given[id], 0, "%s.%s lists %zu file%s "
+	    "for %zu objects: one each", path, name, fl->n, fl->n == 1 ? "" :
+	    "s", rg->nnames);
+	return -1;
+}
+
+int
+load_ranges(struct load *L, const config_setting_t *s, const char *path,
+    const struct table *tab)
+{
+	struct scene *sc = L->sc;
+	int n = config_setting_length(s);
+
+	if (config_setting_type(s) != CONFIG_TYPE_LIST) {
+		load_err_at(L, s, "%s must be a list of groups: "
+		    "%s = ( { object = \"Seed\"; } );", path, path);
+		return -1;
+	}
+	if (n > RANGES_MAX) {
+		load_err_at(L, s, "%s has more than %d entries", path,
+		    RANGES_MAX);
+		return -1;
+	}
+	sc->ranges = xcalloc((size_t)n, sizeof(*sc->ranges));
+	for (int i = 0; i < n; i++) {
+		config_setting_t *e = config_setting_get_elem(s, (unsigned)i);
+		struct organ_range *rg = &sc->ranges[i];
+
+		if (!config_setting_is_group(e)) {
+			load_err_at(L, e, "%s entry %d must be a group "
+			    "{ object = \"Seed\"; ... }", path, i + 1);
+			return -1;
+		}
+		sc->nranges++;
+		load_defaults(tab, rg);
+		if (load_group(L, e, path, tab, rg) < 0)
+			return -1;
+		if (rg->names == NULL) {
+			rg->names = xcalloc(1, sizeof(*rg->names));
+			strcpy(rg->names[0], "Organ");
+			rg->nnames = 1;
+		}
+		if (files_per_name(L, rg, &rg->scenes, RG_SCENE, path,
+		    "scene") != 0 || files_per_name(L, rg, &rg->meshes,
+		    RG_MESH, path, "mesh") != 0)
+			return -1;
+		for (size_t k = 0; rg->scenes.v != NULL &&
+		    rg->meshes.v != NULL && k < rg->nnames; k++) {
+			diag(ST_SCENE, L->file, rg->given[RG_MESH], 0,
+			    "%s.mesh: organ object \"%s\" is made of a scene, "
+			    "whose own organs have the meshes", path,
+			    rg->names[k]);
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* Keep setting s as written: its whole path, and its value as text. */
+void
+load_record(struct load *L, const config_setting_t *s)
+{
+	struct scene *sc = L->sc;
+	char path[PATH_LEN * 2] = "", part[PATH_LEN * 2];
+
+	for (const config_setting_t *p = s; config_setting_parent(p) != NULL;
+	    p = config_setting_parent(p)) {
+		if (config_setting_name(p) != NULL)
+			snprintf(part, sizeof(part), "%s%s%s",
+			    config_setting_name(p), *path ? "." : "", path);
+		else
+			snprintf(part, sizeof(part), "%d%s%s",
+			    config_setting_index(p), *path ? "." : "", path);
+		memcpy(path, part, sizeof(path));
+	}
+	sc->written = xreallocarray(sc->written, sc->nwritten + 1,
+	    sizeof(*sc->written));
+	sc->written[sc->nwritten++] = (struct written){ xstrdup(path),
+	    cfgtext_value(s), load_line(s) };
+}
+
+static int
+load_setting(struct load *L, const config_setting_t *s, const char *path,
+    const struct row *r, void *base)
+{
+	int rc = load_setting_as(L, s, path, r, base);
+
+	if (rc == 0 && L->record && r->type != T_GROUP && r->type != T_RANGES)
+		load_record(L, s);
+	return rc;
+}
+
+/*
+ * "unknown setting 'planar.scael' (did you mean planar.scale?)": the
+ * nearest of the group's names, and at the top level of the models'.
+ */
+static void
+unknown(const struct load *L, const config_setting_t *s,
+    const struct table *tab, const char *path, const char *sub)
+{
+	const char *words[64 + MODELS_MAX];
+	const char *near;
+	size_t n = 0;
+
+	for (size_t k = 0; k < tab->n && n < 64; k++)
+		words[n++] = tab->rows[k].name;
+	for (const struct model *const *m = models; tab == &scene_table &&
+	    *m != NULL; m++)
+		words[n++] = (*m)->name;
+	near = suggest(config_setting_name(s), words, n);
+	load_err_at(L, s, "unknown setting '%s'%s%s%s%s%s", sub,
+	    near ? " (did you mean " : "", near ? path : "",
+	    near && *path ? "." : "", near ? near : "", near ? "?)" : "");
+}
+
+/*
+ * The members of group g, the struct base described by tab, at path.
+ * At the top level, a model's name opens that model's group.
+ */
+int
+load_group(struct load *L, const config_setting_t *g, const char *path,
+    const struct table *tab, void *base)
+{
+	struct group_at *at = at_of(tab, base);
+	int n = config_setting_length(g);
+
+	at->line = load_line(g) > 0 ? load_line(g) : 1;
+	snprintf(at->path, sizeof(at->path), "%s", path);
+	for (int i = 0; i < n; i++) {
+		config_setting_t *s = config_setting_get_elem(g, (unsigned)i);
+		const char *name = config_setting_name(s);
+		const struct model *m;
+		char sub[PATH_LEN];
+		size_t k;
+
+		/* The model is known before its settings are checked. */
+		if (tab == &scene_table && strcmp(name, "model") == 0)
+			continue;
+		snprintf(sub, sizeof(sub), "%s%s%s", path, *path ? "." : "",
+		    name);
+		for (k = 0; k < tab->n; k++)
+			if (strcmp(tab->rows[k].name, name) == 0)
+				break;
+		if (k < tab->n) {
+			given_of(tab, base)[k] = load_line(s);
+			if (load_setting(L, s, sub, &tab->rows[k], base) < 0)
+				return -1;
+			continue;
+		}
+		m = tab == &scene_table ? model_find(name) : NULL;
+		if (m == NULL) {
+			unknown(L, s, tab, path, sub);
+			return -1;
+		}
+		if (m != L->sc->model) {
+			load_err_at(L, s, "'%s' does not apply to model \"%s\"",
+			    sub, L->sc->model->name);
+			return -1;
+		}
+		if (!config_setting_is_group(s)) {
+			load_err_at(L, s, "%s must be a group: %s = { ... };",
+			    sub, sub);
+			return -1;
+		}
+		if (load_group(L, s, sub, m->settings, L->sc->params) < 0)
+			return -1;
+	}
+	return 0;
+}
