@@ -475,7 +475,7 @@ set_weights(struct load *L, const config_setting_t *s, const struct row *r,
 	}
 	rg->weights = xcalloc((size_t)n, sizeof(*rg->weights));
 	rg->nweights = (size_t)n;
-		for (int i = 0; i < n; i++)
+	for (int i = 0; i < n; i++)
 		if (set_number(L, config_setting_get_elem(s, (unsigned)i), r,
 		    path, &rg->weights[i]) < 0)
 			return -1;
