@@ -9,7 +9,10 @@
 static size_t
 utf8_len(const unsigned char *p)
 {
-	size_t n = p[0] >= 0xf0 && p[0] <= 0xf4 ? 4 : p[0] >= 0xe0 ? 3 :
+	/* Bounded above too: f5-ff lead nothing, and taken as 3-byte
+	 * leads they let raw non-UTF-8 through (ff a1 a1 was copied). */
+	size_t n = p[0] >= 0xf0 && p[0] <= 0xf4 ? 4 :
+	    p[0] >= 0xe0 && p[0] < 0xf0 ? 3 :
 	    p[0] >= 0xc2 && p[0] < 0xe0 ? 2 : 0;
 
 	for (size_t i = 1; i < n; i++)

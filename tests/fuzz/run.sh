@@ -45,7 +45,9 @@ for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; d
 	# of the escaping test.
 	fuzz_json) grep -h '^usemtl\|^newmtl' scenes/organs/* tests/gltf/* |
 		awk '{ f = sprintf("%s/seed%d", c, NR); printf "%s", $2 > f; close(f) }' c="$c"
-		printf 'a"b\\c\001d\377\303\274\355\240\200' >"$c/bytes" ;;
+		printf 'a"b\\c\001d\377\303\274\355\240\200' >"$c/bytes"
+		# ff before continuation bytes, once copied out raw.
+		printf '\241p\377\241\241\241' >"$c/stray-ff" ;;
 	esac
 	echo "== $f, $t s"
 	./build-fuzz/$f -max_total_time="$t" -max_len=8192 -timeout=10 \
