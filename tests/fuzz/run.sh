@@ -1,6 +1,6 @@
 #!/bin/sh
-# run.sh SECONDS [HARNESS...] - run each fuzz harness (all five unless
-# named) for SECONDS on its corpus in
+# run.sh SECONDS [HARNESS...] - run each fuzz harness (every
+# tests/fuzz/fuzz_*.c unless named) for SECONDS on its corpus in
 # build-fuzz/corpus/NAME, seeded from the scenes, test inputs, templates
 # and organ meshes; crashes are written to build-fuzz/crash-NAME-*.
 set -u
@@ -9,7 +9,8 @@ t=${1:-60}
 LSAN_OPTIONS=suppressions=$(pwd)/tests/tools/lsan.supp:print_suppressions=0
 export LSAN_OPTIONS
 [ $# -gt 0 ] && shift
-for f in ${*:-fuzz_scene fuzz_expr fuzz_template fuzz_set fuzz_obj fuzz_json}; do
+all=$(for h in tests/fuzz/fuzz_*.c; do basename "$h" .c; done)
+for f in ${*:-$all}; do
 	c=build-fuzz/corpus/$f
 	mkdir -p "$c"
 	case $f in
