@@ -312,6 +312,25 @@ inhib_first_bound(const struct field *F, const struct cut *cuts, size_t k,
 }
 
 /*
+ * A lower bound of E at an end of gap g (side 0: its start, 1: its
+ * end), where a cut sits: as gap_bound() takes it, the floor and the
+ * far field's least, with the pulls of the 16 near cuts about the gap
+ * at that point, the cut's own among them.  Half the minimised gaps'
+ * ends are ruled out by it at G = 0.0005 (one sum of E less each).
+ */
+double
+inhib_end_least(const struct field *F, const struct cut *cuts, size_t k,
+    size_t g, int side)
+{
+	size_t kn = F->ncp, nc = tiers[1].cuts < kn ? tiers[1].cuts : kn;
+	size_t first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
+	const struct cut *at = &cuts[side == 0 ? g : g + 1 < k ? g + 1 : 0];
+
+	return F->floor + (F->moments ? F->far_least : 0) + side_above(F,
+	    first, first + nc, at->c, at->s);
+}
+
+/*
  * For the tests: every tier's bound of every gap, inhib_first_bound()'s too,
  * against the least E the search finds in it.  A bound above it is
  * wrong, and would have let the search pass over the gap holding the
@@ -325,7 +344,7 @@ inhib_check_bounds(struct field *F, const struct cut *cuts, size_t k)
 
 		if (!(b - a >= 1e-12))
 			continue;
-		inhib_minimise(F, a, b, (a + b) / 2, &e);
+		inhib_minimise(F, cuts, k, g, (a + b) / 2, &e);
 		for (int t = 0; t < TIERS; t++)
 			if (inhib_gap_bound(F, cuts, k, g, a, b, t, HUGE_VAL,
 			    NULL, &at) > e * (1 + 1e-12))

@@ -142,8 +142,8 @@ void	inhib_energy(const struct field *, double th, double e[3]);
 double	inhib_energy_only(const struct field *, double th);
 
 /* The least minimum on the edge (inhibition_min.c). */
-double	inhib_minimise(const struct field *, double a, double b, double x,
-	    double *emin);
+double	inhib_minimise(const struct field *, const struct cut *, size_t k,
+	    size_t g, double x, double *emin);
 double	inhib_next_angle(struct field *, struct cut *, struct gap *);
 
 /* Lower bounds of the energy in a gap (inhibition_bounds.c). */
@@ -152,6 +152,8 @@ double	inhib_first_bound(const struct field *, const struct cut *,
 double	inhib_gap_bound(const struct field *, const struct cut *, size_t k,
 	    size_t g, double a, double b, int tier, double stop,
 	    unsigned *live, double *at);
+double	inhib_end_least(const struct field *, const struct cut *, size_t k,
+	    size_t g, int side);
 void	inhib_check_bounds(struct field *, const struct cut *, size_t k);
 
 #endif
