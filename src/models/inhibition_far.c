@@ -266,14 +266,31 @@ inhib_far_least(const struct field *F, double lo, double hi)
 }
 
 /*
+ * The powers x[j], j <= nmodes, split by parity: moment (j, m) of row m
+ * takes x[m + 2i], which is then h[m / 2 + i] of the half h for m's
+ * parity, read in order.
+ */
+static void
+far_halves(const struct field *F, const double *x, double *even,
+    double *odd)
+{
+	for (int j = 0; j <= F->nmodes; j++)
+		(j % 2 ? odd : even)[j / 2] = x[j];
+}
+
+/*
  * The modes now, S[n]: with the primordia that have moved beyond far_r
- * joining the moments.
+ * joining the moments.  The last to join this step (most steps, one)
+ * joins in the same pass over the moments that sums the modes.
  */
 void
 inhib_far_step(struct field *F)
 {
 	size_t n = F->n;
 	double f[MODES_MAX + 1], t = F->S[n] - F->base;
+	double fh[2][MODES_MAX / 2 + 1], ph[2][MODES_MAX / 2 + 1];
+	double cm[MODES_MAX + 1], sm[MODES_MAX + 1];
+	int join = 0;
 
 	if ((2 * F->hs + F->nmodes) * t > REBASE) {
 		far_factors(F, t, f);
@@ -288,8 +305,7 @@ inhib_far_step(struct field *F)
 	while (F->from < n && R0 * exp(F->S[n] - F->S[F->from]) >= F->far_r) {
 		/* Its radius in base's units; u^-(s+j) under e^REBASE. */
 		double u = R0 * exp(F->base - F->S[F->from]), iu = 1 / u;
-		double pw[MODES_MAX + 1], cm[MODES_MAX + 1];
-		double sm[MODES_MAX + 1];
+		double pw[MODES_MAX + 1];
 		double c1 = F->c[F->from], s1 = F->s[F->from];
 
 		pw[0] = pow(u, -2 * F->hs);
@@ -300,31 +316,52 @@ inhib_far_step(struct field *F)
 			cm[m] = cm[m - 1] * c1 - sm[m - 1] * s1;
 			sm[m] = sm[m - 1] * c1 + cm[m - 1] * s1;
 		}
+		far_halves(F, pw, ph[0], ph[1]);
+		F->from++;
+		if (!(F->from < n && R0 * exp(F->S[n] - F->S[F->from]) >=
+		    F->far_r)) {
+			join = 1;	/* the last: below */
+			break;
+		}
 		for (int m = 0; m <= F->nmodes; m++) {
-			const double *w = F->w + F->row[m], *p = pw + m;
+			const double *w = F->w + F->row[m];
+			const double *p = ph[m % 2] + m / 2;
 			double *mc = F->Mc + F->row[m], *ms = F->Ms + F->row[m];
 			size_t len = F->row[m + 1] - F->row[m];
 
 			for (size_t i = 0; i < len; i++) {
-				double v = w[i] * p[2 * i];
+				double v = w[i] * p[i];
 
 				mc[i] += v * cm[m];
 				ms[i] += v * sm[m];
 			}
 		}
-		F->from++;
 	}
 	far_factors(F, t, f);
+	far_halves(F, f, fh[0], fh[1]);
 	for (int m = 0; m <= F->nmodes; m++) {
-		const double *mc = F->Mc + F->row[m], *ms = F->Ms + F->row[m];
-		const double *p = f + m;
+		double *mc = F->Mc + F->row[m], *ms = F->Ms + F->row[m];
+		const double *p = fh[m % 2] + m / 2;
 		size_t len = F->row[m + 1] - F->row[m];
 		double c = 0, s = 0;
 
-		for (size_t i = 0; i < len; i++) {
-			c += p[2 * i] * mc[i];
-			s += p[2 * i] * ms[i];
-		}
+		if (join) {
+			const double *w = F->w + F->row[m];
+			const double *q = ph[m % 2] + m / 2;
+
+			for (size_t i = 0; i < len; i++) {
+				double v = w[i] * q[i];
+
+				mc[i] += v * cm[m];
+				ms[i] += v * sm[m];
+				c += p[i] * mc[i];
+				s += p[i] * ms[i];
+			}
+		} else
+			for (size_t i = 0; i < len; i++) {
+				c += p[i] * mc[i];
+				s += p[i] * ms[i];
+			}
 		F->Fc[m] = c;
 		F->Fs[m] = s;
 	}
