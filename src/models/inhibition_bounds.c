@@ -308,8 +308,9 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
  */
 double
 inhib_first_bound(const struct field *F, const struct cut *cuts, size_t k,
-    size_t g, double a, double b, double *at)
+    size_t g, double a, double b, double stop, double *at)
 {
+	double near;
 	size_t kn = F->ncp, nc = tiers[0].cuts < kn ? tiers[0].cuts : kn;
 	size_t first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
 	const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
@@ -320,9 +321,14 @@ inhib_first_bound(const struct field *F, const struct cut *cuts, size_t k,
 		return inhib_gap_bound(F, cuts, k, g, a, b, 0, HUGE_VAL, NULL,
 		    at);
 	*at = (a + b) / 2;
-	return F->floor + (F->moments ? inhib_far_least(F, a, b) : 0) +
-	    side_above(F, first, first + nc / 2, end->c, end->s) +
-	    side_above(F, first + nc / 2, first + nc, cuts[g].c, cuts[g].s);
+	near = F->floor + side_above(F, first, first + nc / 2, end->c,
+	    end->s) + side_above(F, first + nc / 2, first + nc, cuts[g].c,
+	    cuts[g].s);
+	if (!F->moments)
+		return near;
+	/* The grid's bound only where the far field's least falls short. */
+	return near + F->far_least >= stop ? near + F->far_least : near +
+	    inhib_far_least(F, a, b);
 }
 
 /*
@@ -363,8 +369,8 @@ inhib_check_bounds(struct field *F, const struct cut *cuts, size_t k)
 			if (inhib_gap_bound(F, cuts, k, g, a, b, t, HUGE_VAL,
 			    NULL, &at) > e * (1 + 1e-12))
 				F->misses++;
-		if (inhib_first_bound(F, cuts, k, g, a, b, &at) > e * (1 +
-		    1e-12))
+		if (inhib_first_bound(F, cuts, k, g, a, b, HUGE_VAL, &at) >
+		    e * (1 + 1e-12))
 			F->misses++;
 	}
 }

@@ -160,7 +160,7 @@ double	inhib_next_angle(struct field *, struct cut *, struct gap *);
 
 /* Lower bounds of the energy in a gap (inhibition_bounds.c). */
 double	inhib_first_bound(const struct field *, const struct cut *,
-	    size_t k, size_t g, double a, double b, double *at);
+	    size_t k, size_t g, double a, double b, double stop, double *at);
 double	inhib_gap_bound(const struct field *, const struct cut *, size_t k,
 	    size_t g, double a, double b, int tier, double stop,
 	    unsigned *live, double *at);

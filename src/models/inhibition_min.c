@@ -254,7 +254,7 @@ inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 		gp->tier = 0;
 		gp->live = (1u << SUBPARTS) - 1;
 		gp->lb = b - a >= 1e-12 ? inhib_first_bound(F, cuts, k, g, a, b,
-		    &gp->at) : HUGE_VAL;	/* no room */
+		    emin, &gp->at) : HUGE_VAL;	/* no room */
 		if (gp->lb < emin)
 			search_gap(F, cuts, k, g, gp, &emin, &th, &gmin);
 	}
