@@ -283,7 +283,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	if (P->kernel == K_GAUSSIAN)
 		F.gt = xcalloc(N * 2 * (GMODES + 1), sizeof(*F.gt));
 	else if (F.moments)
-		inhib_far_init(&F);
+		inhib_far_init(&F, R0 * exp(gmin * (double)near_count(gmin)));
 
 	for (size_t n = 0; n < N; n++) {
 		/*
@@ -389,6 +389,9 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	free(F.w);
 	free(F.Mc);
 	free(F.Ms);
+	free(F.gv);
+	free(F.gd);
+	free(F.tw);
 	return 0;
 }
 

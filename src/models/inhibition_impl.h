@@ -13,7 +13,8 @@
 #include <stddef.h>
 
 #define R0		1.0	/* the meristem's radius: the unit */
-#define MODES		80	/* of the power law's far field */
+#define MODES		80	/* of the power law's far field, at least */
+#define MODES_MAX	400	/* and at most (slow growth) */
 #define GMODES		14	/* of the Gaussian's: e^-(15^2/4) < 1e-24 */
 
 /*
@@ -41,10 +42,10 @@ struct cutp {
  * Gegenbauer polynomials of order s/2 (their generating function), and
  * C_j(cos a) = sum_i w_ji cos((j - 2i) a).  So the primordia beyond
  * radius far_r (x below x_far) add up to sum_m Fc_m cos(m th) + Fs_m
- * sin(m th) over m <= MODES, from the moments sum r^-(s+j) cos(m phi)
+ * sin(m th) over m <= nmodes, from the moments sum r^-(s+j) cos(m phi)
  * and sin(m phi); a plastochron's growth multiplies each by
  * e^-(s+j)G.  Each primordium joins the moments once and costs nothing
- * after: near ones are summed one by one, the rest in O(MODES^2) a
+ * after: near ones are summed one by one, the rest in O(nmodes^2) a
  * primordium however many came before.
  *
  * The moments are kept in units that do not move: each as it was at the
@@ -69,9 +70,19 @@ struct field {
 					   (j, m) in mode m */
 	double		*Mc, *Ms;	/* the weighted moments at base */
 	double		 base;		/* their units' S */
-	size_t		 row[MODES + 2];	/* where m's moments start */
-	double		 Fc[MODES + 1], Fs[MODES + 1];	/* the modes */
-	int		 nmodes;	/* of the far field: MODES or GMODES */
+	size_t		 row[MODES_MAX + 2];	/* where m's moments start */
+	double		 Fc[MODES_MAX + 1], Fs[MODES_MAX + 1];	/* the modes */
+	int		 nmodes;	/* of the far field: GMODES, or MODES
+					   and more where the cuts reach
+					   inside far_r (inhib_far_init()) */
+	int		 grid;		/* 0, or the points of a grid on the
+					   circle where the far field is known
+					   (inhib_far_least()) */
+	double		*gv, *gd;	/* its E and E' there */
+	double		*tw;		/* the grid's cos and sin (2 pi j /
+					   grid), j < grid / 2 */
+	double		 m2;		/* sum m^2 |mode m|: E'' at most */
+	double		 gerr;		/* the grid's rounding, at most */
 	double		*gt;		/* Gaussian: per primordium cos and
 					   sin (m phi), m <= GMODES */
 	double		 far_curv;	/* the far field's E'', at most */
@@ -130,7 +141,8 @@ pull_at(const struct field *F, double q)
 }
 
 /* The far field (inhibition_far.c). */
-void	inhib_far_init(struct field *);
+void	inhib_far_init(struct field *, double inside);
+double	inhib_far_least(const struct field *, double lo, double hi);
 void	inhib_far_step(struct field *);
 void	inhib_far_summary(struct field *);
 void	inhib_far_energy(const struct field *, double th, int modes,
@@ -142,16 +154,18 @@ void	inhib_energy(const struct field *, double th, double e[3]);
 double	inhib_energy_only(const struct field *, double th);
 
 /* The least minimum on the edge (inhibition_min.c). */
-double	inhib_minimise(const struct field *, double a, double b, double x,
-	    double *emin);
+double	inhib_minimise(const struct field *, const struct cut *, size_t k,
+	    size_t g, double x, double *emin);
 double	inhib_next_angle(struct field *, struct cut *, struct gap *);
 
 /* Lower bounds of the energy in a gap (inhibition_bounds.c). */
 double	inhib_first_bound(const struct field *, const struct cut *,
-	    size_t k, size_t g, double a, double b, double *at);
+	    size_t k, size_t g, double a, double b, double stop, double *at);
 double	inhib_gap_bound(const struct field *, const struct cut *, size_t k,
 	    size_t g, double a, double b, int tier, double stop,
 	    unsigned *live, double *at);
+double	inhib_end_least(const struct field *, const struct cut *, size_t k,
+	    size_t g, int side);
 void	inhib_check_bounds(struct field *, const struct cut *, size_t k);
 
 #endif

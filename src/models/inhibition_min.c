@@ -11,14 +11,17 @@
 #include "models/inhibition_impl.h"
 
 /*
- * The minimum of E inside [a, b], from x, to 1e-12 rad: Newton on E'
+ * The minimum of E inside gap g, from x, to 1e-12 rad: Newton on E'
  * where E'' > 0 and its step stays inside the bracket of E''s signs,
- * else the bracket's chord or half; or an end, if that is lower.
+ * else the bracket's chord or half; or an end, if that is lower: where
+ * a lower bound at an end (inhib_end_least()) is above the minimum
+ * inside, as it mostly is, E is not summed there.
  */
 double
-inhib_minimise(const struct field *F, double a, double b, double x,
-    double *emin)
+inhib_minimise(const struct field *F, const struct cut *cuts, size_t k,
+    size_t g, double x, double *emin)
 {
+	double a = cuts[g].th, b = gap_end(cuts, k, g);
 	double e[3], ends[2] = { a, b }, last = 0;	/* Newton's step */
 	double d[2] = { 0, 0 };		/* E' at a and b, once known */
 	int done = 0, tried[2] = { 0, 0 }, moved, kept = -1;
@@ -81,7 +84,11 @@ inhib_minimise(const struct field *F, double a, double b, double x,
 	}
 	*emin = done ? e[0] : inhib_energy_only(F, x);
 	for (int side = 0; side < 2; side++) {
-		double ee = inhib_energy_only(F, ends[side]);
+		double ee;
+
+		if (inhib_end_least(F, cuts, k, g, side) > *emin * (1 + 1e-12))
+			continue;
+		ee = inhib_energy_only(F, ends[side]);
 
 		if (ee < *emin) {
 			*emin = ee;
@@ -167,7 +174,7 @@ search_gap(const struct field *F, const struct cut *cuts, size_t k,
 	}
 	if (!(gp->lb < *emin))
 		return;
-	x = inhib_minimise(F, a, b, gp->at, &e);
+	x = inhib_minimise(F, cuts, k, g, gp->at, &e);
 	if (e < *emin || (e == *emin && g < *gmin)) {
 		*emin = e;
 		*th = x;
@@ -247,7 +254,7 @@ inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 		gp->tier = 0;
 		gp->live = (1u << SUBPARTS) - 1;
 		gp->lb = b - a >= 1e-12 ? inhib_first_bound(F, cuts, k, g, a, b,
-		    &gp->at) : HUGE_VAL;	/* no room */
+		    emin, &gp->at) : HUGE_VAL;	/* no room */
 		if (gp->lb < emin)
 			search_gap(F, cuts, k, g, gp, &emin, &th, &gmin);
 	}

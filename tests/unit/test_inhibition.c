@@ -231,6 +231,20 @@ main(void)
 	    "growth = 0.003; };");
 	bounds("bounds, power law, G = 0.0005", "count = 400; inhibition = { "
 	    "growth = 0.0005; };");
+	/*
+	 * Below G = 0.003 the far field starts at the oldest cut, with
+	 * more modes, and is bounded from its grid: 500 primordia at
+	 * 0.001 put some 260 into it.
+	 */
+	bounds("bounds, power law, G = 0.001, the far field from a grid",
+	    "count = 500; inhibition = { growth = 0.001; };");
+	/*
+	 * Growth rising from there: the newest cut moves out past the
+	 * far field's radius, and its pull is the field's, not its own.
+	 */
+	bounds("bounds, power law, G rising from 0.0005 past the grid's far "
+	    "radius", "count = 700; inhibition = { growth = \"0.0005 + "
+	    "0.006 * t\"; };");
 	bounds("bounds, power law s = 6, G = 0.2", "count = 120; inhibition = "
 	    "{ growth = 0.2; exponent = 6; };");
 	bounds("bounds, gaussian kernel", "count = 120; inhibition = { kernel "
