@@ -153,7 +153,10 @@ inhib_far_summary(struct field *F)
 
 /*
  * In place, y_j = sum_m x_m e^(2 pi i m j / N), N = F->grid: radix 2,
- * the bits reversed first.
+ * the bits reversed first.  Our own, not FFTW's: one size a run (at
+ * most 1024 points), the twiddles made once in inhib_far_init(), and
+ * the rounding margin inhib_far_least() takes is that of this plain
+ * algorithm; a second library and its plans would not pay for 40 lines.
  */
 static void
 fft(const struct field *F, double *re, double *im)
