@@ -285,8 +285,13 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		    R_SMALLEST, fmax(C.cv.length, C.cv.rho_max));
 		goto out;
 	}
-	if (!C.nocover && C.rconst <= 0) {
-		/* A slot for every primordium or so, at most 2^20 (24 MB). */
+	/*
+	 * Witnesses only where the radius falls below its first value:
+	 * a radius that only grows leaves no gap below the front that the
+	 * walks come back to.  A slot for every primordium or so, at most
+	 * 2^20 (20 MB).
+	 */
+	if (!C.nocover && C.rconst <= 0 && rmin < r) {
 		size_t nw = 4096;
 
 		while (nw < (size_t)N && nw < (size_t)1 << 20)
