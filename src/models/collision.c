@@ -285,20 +285,6 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		    R_SMALLEST, fmax(C.cv.length, C.cv.rho_max));
 		goto out;
 	}
-	/*
-	 * Witnesses only where the radius falls below its first value:
-	 * a radius that only grows leaves no gap below the front that the
-	 * walks come back to.  A slot for every primordium or so, at most
-	 * 2^20 (20 MB).
-	 */
-	if (!C.nocover && C.rconst <= 0 && rmin < r) {
-		size_t nw = 4096;
-
-		while (nw < (size_t)N && nw < (size_t)1 << 20)
-			nw *= 2;
-		C.wit = xcalloc(nw, sizeof(*C.wit));
-		C.wit_mask = (uint32_t)(nw - 1);
-	}
 	if (!C.nocover) {
 		/*
 		 * The band N primordia can cover, twice over for loose
@@ -357,7 +343,6 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 				cover_floor(&C.cover, fmin(r, C.law_min[i]));
 		}
 		coll_add(&C, t, row, a, c, s, r, brute ? NULL : at);
-		coll_witness_round(&C, n);
 		if (ctx->progress != NULL && n % PROGRESS_EVERY == 0)
 			ctx->progress(n + 1, 0);
 	}
@@ -375,8 +360,6 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 	if (how == PLACE_CHECK) {
 		result_info(res, "refine misses", 2, (double)C.refine_misses,
 		    (double)C.refined);
-		result_info(res, "witness misses", 2,
-		    (double)C.witness_misses, (double)C.witnessed);
 		result_info(res, "cover misses", 1, (double)cover_check(&C.cover,
 		    &C.cv, C.rmax, CHECK_EVERY, coll_near_point, &C));
 	}
@@ -389,7 +372,6 @@ out:
 	free(C.law);
 	free(C.law_min);
 	free(C.slot);
-	free(C.wit);
 	return rc;
 }
 

@@ -385,13 +385,6 @@ cover_dirs(const struct cover *cv, int32_t k, int32_t j, double mid[2],
 	}
 }
 
-uint32_t
-cover_cell_id(const struct cover *cv, int32_t k, int32_t j)
-{
-	/* At most CELLS_MAX cells, in tiles of 64 bytes, one a cell. */
-	return (uint32_t)(cell(cv, k, j) - cv->u) + 1;
-}
-
 /* The last row in [lo, hi] that starts at or before t, else lo. */
 static int32_t
 row_within(const struct cover *cv, double t, int32_t lo, int32_t hi)

@@ -114,9 +114,6 @@ void	cover_dirs(const struct cover *, int32_t k, int32_t j, double mid[2],
  */
 void	cover_ahead(const struct cover *, double phi);
 
-/* Cell (k, j)'s number, 1 and up, the same for every column in it. */
-uint32_t cover_cell_id(const struct cover *, int32_t k, int32_t j);
-
 /* The row holding t. */
 int32_t	cover_row(const struct cover *, double t);
 

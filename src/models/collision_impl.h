@@ -27,19 +27,6 @@ struct slot {
 	int32_t	 head;		/* -1: empty slot */
 };
 
-/*
- * What the last looks in a cell of the cover map found blocking the
- * walks there (collision_walk.c: row_blocked()): the primordia over
- * the points looked at, newest first, the one the walk left by first
- * of all (-1: none).  A cache, one cell a slot, overwritten by others.
- */
-#define WITNESSES	4
-
-struct witness {
-	uint32_t	 cell;		/* cover_cell_id(), 0: empty */
-	int32_t		 m[WITNESSES];
-};
-
 struct coll {
 	const struct model_ctx *ctx;
 	const struct collision *p;
@@ -58,15 +45,10 @@ struct coll {
 	int		 nocover;	/* walk without the cover map */
 	int		 check;		/* test what refine() proves */
 	long long	 refined, refine_misses;
-	long long	 witnessed, witness_misses;
 	double		*law;		/* the radius law sampled, or NULL */
 	double		*law_min;	/* the least of law[i ..], each i */
 	long long	 law_step;	/* every law_step primordia */
 	size_t		 nlaw;
-	struct witness	*wit;		/* with changing radii, else NULL */
-	uint32_t	 wit_mask;
-	long long	 wit_tries, wit_passed;	/* of this round */
-	long long	 wit_off;	/* no witnesses before this walk */
 };
 
 /*
@@ -157,8 +139,6 @@ void	coll_grid_fit(struct coll *, double r);
  */
 double	coll_place_exact(struct coll *, long long n, double t0, double phi,
 	    double c, double s, double r, int32_t *row, double p[2]);
-/* After walk n: witnesses on or off for the walks to come. */
-void	coll_witness_round(struct coll *, long long n);
 /* For cover_check: a primordium's surface within U of p? */
 int	coll_near_point(void *, const double p[3], double U);
 

@@ -3,9 +3,7 @@
  * curve: at each stop the grid names the earlier primordia the new one
  * would overlap, and the walk jumps to the furthest point where the
  * curve leaves them (curve_exit), skipping what the cover map
- * (collision_cover.c) proves covered, and proving more of it (refine),
- * and with changing radii passing the rows that the primordia which
- * blocked the last looks there block again (witnesses).
+ * (collision_cover.c) proves covered, and proving more of it (refine).
  */
 #include <math.h>
 
@@ -37,7 +35,7 @@ struct hit {
  */
 static double
 furthest_exit(const struct coll *C, double t, const double pt[2],
-    const double tan[2], struct hit *hits, int n, double best, int32_t *who)
+    const double tan[2], struct hit *hits, int n, double best)
 {
 	double at = -1, p[2], tt = tan[0] * tan[0] + tan[1] * tan[1];
 	int first = 0;
@@ -74,7 +72,6 @@ furthest_exit(const struct coll *C, double t, const double pt[2],
 		/* e == t: touching, up to rounding. */
 		if (e > t && e > best) {
 			best = e;
-			*who = h->m;
 			if (e != HUGE_VAL) {	/* the point there, known */
 				at = e;
 				p[0] = pe[0];
@@ -93,7 +90,7 @@ furthest_exit(const struct coll *C, double t, const double pt[2],
 static inline void
 exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
     const double tan[2], double x, double y, double z, double c, double s,
-    double r, struct hit *hits, int *n, double *best, int32_t *who)
+    double r, struct hit *hits, int *n, double *best)
 {
 	const struct prim *o = &C->pr[m];
 	double dx = x - o->x, dy = y - o->y, dz = z - o->z, R = r + o->r;
@@ -103,7 +100,7 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
 	if (dx * dx + dy * dy + dz * dz >= R * R)
 		return;
 	if (*n == HITS) {
-		*best = furthest_exit(C, t, pt, tan, hits, *n, *best, who);
+		*best = furthest_exit(C, t, pt, tan, hits, *n, *best);
 		*n = 0;
 	}
 	h = &hits[(*n)++];
@@ -122,13 +119,12 @@ exit_from(const struct coll *C, int32_t m, double t, const double pt[2],
  * pd, if not NULL, is the curve's point and dp/dt at t, known already;
  * p is the point, after.  hits[0..*nh) are the overlapping primordia,
  * for refine(): all of them, or of more than HITS the ones after the
- * last full set, which was worked out as it filled; *who the primordium
- * whose disk *to is the exit of.
+ * last full set, which was worked out as it filled.
  */
 static int
 free_at(const struct coll *C, double t, double c, double s, double r,
     const double *pd, double p[2], double *to, struct hit hits[HITS],
-    int *nh, int32_t *who)
+    int *nh)
 {
 	double d[2], x, y, z, best = -1, cells;
 	int32_t lo[3], hi[3];
@@ -148,7 +144,7 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 	    (double)C->n) {
 		for (size_t m = 0; m < C->n; m++)
 			exit_from(C, (int32_t)m, t, p, d, x, y, z, c, s, r, hits,
-			    &n, &best, who);
+			    &n, &best);
 	} else {
 		/*
 		 * The cells' slots first, each one's line asked for ahead:
@@ -178,11 +174,11 @@ free_at(const struct coll *C, double t, double c, double s, double r,
 					    slot_find(C, key))->head;
 					for (; m >= 0; m = C->next[m])
 						exit_from(C, m, t, p, d, x, y, z, c,
-						    s, r, hits, &n, &best, who);
+						    s, r, hits, &n, &best);
 				}
 	}
 	*nh = n;
-	if ((best = furthest_exit(C, t, p, d, hits, n, best, who)) < 0)
+	if ((best = furthest_exit(C, t, p, d, hits, n, best)) < 0)
 		return 1;
 	*to = best;
 	return 0;
@@ -407,93 +403,6 @@ below_head(struct coll *C, int32_t k, int32_t j, double r, double t,
 	return to;
 }
 
-static inline struct witness *
-witness_slot(const struct coll *C, uint32_t id)
-{
-	return &C->wit[(id * 0x9E3779B1u ^ id >> 13) & C->wit_mask];
-}
-
-/*
- * Is the meridian (c, s) blocked all through row k for a primordium of
- * radius r, by the witnesses w?  Each sub-row's points lie within
- * e = h[k] / COVER_SUB of its middle m (along the curve, and a chord is
- * no longer than its arc; the same fact farthest() and refine() rest
- * on), so if |m - Q| < r + r_Q - e for a witness Q, every point p of
- * the sub-row has |p - Q| <= |m - Q| + e < r + r_Q: the new primordium
- * would overlap Q there.  The margin, a millionth of e and 1e-12 of
- * the distances, is far above their rounding, so the exact test at
- * such a point (free_at()) could not find it free either.
- */
-static int
-row_blocked(const struct coll *C, int32_t k, double c, double s, double r,
-    const struct witness *w)
-{
-	const struct cover *cv = &C->cover;
-	double e = cv->h[k] / COVER_SUB * (1 + 1e-6);
-
-	for (int sa = 0; sa < COVER_SUB; sa++) {
-		const double *sp = cv->sub[k * COVER_SUB + sa];
-		double x = sp[0] * c, y = sp[0] * s, z = sp[1];
-		int i;
-
-		for (i = 0; i < WITNESSES && w->m[i] >= 0; i++) {
-			const struct prim *o = &C->pr[w->m[i]];
-			double dx = x - o->x, dy = y - o->y, dz = z - o->z;
-			double R = (r + o->r - e) * (1 - 1e-12);
-
-			if (R > 0 && dx * dx + dy * dy + dz * dz < R * R)
-				break;
-		}
-		if (i == WITNESSES || w->m[i] < 0)
-			return 0;
-	}
-	return 1;
-}
-
-/*
- * For the tests: at 65 points along row k of meridian (c, s), is the
- * new primordium within reach of some primordium, as row_blocked()
- * proved?  Returns the points where it is not.
- */
-static long long
-witness_check(const struct coll *C, int32_t k, double c, double s, double r)
-{
-	const struct cover *cv = &C->cover;
-	double t0 = cv->t_row[k], t1 = cv->t_row[k + 1];
-	long long misses = 0;
-
-	for (int a = 0; a <= 64; a++) {
-		double q[2], p[3];
-
-		curve_eval(&C->cv, t0 + (t1 - t0) * a / 64, q, NULL);
-		p[0] = q[0] * c;
-		p[1] = q[0] * s;
-		p[2] = q[1];
-		misses += !coll_near_point((void *)C, p, r);
-	}
-	return misses;
-}
-
-/* A look in cell id left it by primordium m's disk: a witness. */
-static void
-witness_add(struct coll *C, uint32_t id, int32_t m)
-{
-	struct witness *w = witness_slot(C, id);
-	int i;
-
-	if (w->cell != id) {
-		w->cell = id;
-		for (i = 0; i < WITNESSES; i++)
-			w->m[i] = -1;
-	}
-	for (i = 0; i < WITNESSES - 1 && w->m[i] != m; i++)
-		;
-	/* Newest first; the oldest, or m's older place, makes room. */
-	for (; i > 0; i--)
-		w->m[i] = w->m[i - 1];
-	w->m[0] = m;
-}
-
 /*
  * The smallest free t >= t0 on meridian (c, s), exactly; HUGE_VAL: none.
  * *row is t's row of the cover map, if the walk found it, else -1, and
@@ -506,61 +415,21 @@ coll_place_exact(struct coll *C, long long n, double t0, double phi, double c,
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
 	double t = t0, to;
 	struct hit hits[HITS];
-	int wit = C->wit != NULL && n >= C->wit_off;
 
 	while (t <= C->cv.tmax) {
 		const double *pd = NULL;
 		int nh;
-		int32_t who = -1;
-		uint32_t id = 0;
-		struct witness *w;
 
 		/* One call leaves t where the walk must look. */
 		if (!C->nocover && cover_skip(&C->cover, &t, j, r, &k) &&
 		    !(t <= C->cv.tmax))
 			break;
-		/*
-		 * With changing radii, most looks below the front are at
-		 * gaps a little too small, between older, larger primordia,
-		 * that the cover map cannot prove covered, and the walks
-		 * come by them again and again: the primordia the last
-		 * looks there left by are tried first.  If they block the
-		 * whole row, nothing in it is free: on to the next.
-		 */
-		if (wit && k >= 0 && k + 1 < C->cover.rows) {
-			id = cover_cell_id(&C->cover, k, j);
-			w = witness_slot(C, id);
-			C->wit_tries++;
-			if (w->cell == id && row_blocked(C, k, c, s, r, w)) {
-				C->wit_passed++;
-				if (C->check) {
-					C->witnessed++;
-					C->witness_misses += witness_check(C, k,
-					    c, s, r);
-				}
-				if (k == C->cover.head[j])
-					cover_passed(&C->cover, j, k);
-				t = C->cover.t_row[k + 1];
-				continue;
-			}
-		}
 		/* Moved to a row's start: the curve there is known. */
 		if (k >= 0 && t == C->cover.t_row[k])
 			pd = C->cover.start[k];
-		if (free_at(C, t, c, s, r, pd, p, &to, hits, &nh, &who)) {
+		if (free_at(C, t, c, s, r, pd, p, &to, hits, &nh)) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;
-		}
-		if (wit && k >= 0 && k + 1 < C->cover.rows && who >= 0) {
-			/*
-			 * The disks over the point, the one left by last
-			 * (and first tried): on other meridians through the
-			 * cell the same few mostly block it.
-			 */
-			for (int h = nh; h-- > 0; )
-				if (hits[h].m != who)
-					witness_add(C, id, hits[h].m);
-			witness_add(C, id, who);
 		}
 		/* Blocked across a cell that holds up the column's prefix. */
 		if (!C->nocover && k == C->cover.head[j] &&
@@ -574,28 +443,4 @@ coll_place_exact(struct coll *C, long long n, double t0, double phi, double c,
 		t = to;		/* k, the row before, is where its row is sought from */
 	}
 	return HUGE_VAL;
-}
-
-/*
- * Are witnesses worth their cost?  Where walks seldom come back to a
- * gap (the hemisphere, radius falling 0.0003 -> 0.00006 over 300,000:
- * 0.07% of tries pass a row) the tries and the notes cost 3% more
- * instructions; on the sphere, where walks do come back (30% pass),
- * they save 12%.  So after each round of WIT_ROUND tries, if under one
- * in WIT_FEW passed, the walks go without for the next WIT_REST walks,
- * then try again.  Either way placement is exact.
- */
-#define WIT_ROUND	4096
-#define WIT_FEW		1000
-#define WIT_REST	8192
-
-void
-coll_witness_round(struct coll *C, long long n)
-{
-	/* The tests' check of what they prove wants them all along. */
-	if (C->wit == NULL || C->check || C->wit_tries < WIT_ROUND)
-		return;
-	if (C->wit_passed * WIT_FEW < C->wit_tries)
-		C->wit_off = n + WIT_REST;
-	C->wit_tries = C->wit_passed = 0;
 }
