@@ -29,19 +29,22 @@ echo "== expressions"
 echo "== number formatting"
 "$TESTBIN/bench_numfmt"
 
-# The code before issue 38's work, built here with today's bench
-# programs, so that each figure below is printed beside the old code's
-# in the same run (BENCH_BASE=<commit> for another; none outside git).
-BASE=${BENCH_BASE:-3ac030d}
+# The code before this round of issue 38's work (8d64d91: the layout of
+# issue 37 in place, the inhibition model's grid bound not yet), built
+# here with today's bench programs, so that each figure below is printed
+# beside the old code's in the same run (BENCH_BASE=<commit> for
+# another, of this layout: tests/bench/, models/model_ctx; none outside
+# git).
+BASE=${BENCH_BASE:-8d64d91}
 OLD=
 if [ "$BASE" != none ] && git rev-parse -q --verify "$BASE^{commit}" >/dev/null 2>&1; then
 	OLD=$OUT/old
 	rm -rf "$OLD" && mkdir -p "$OLD" &&
 		git archive "$BASE" | tar -x -C "$OLD" &&
-		cp tests/bench/bench_*.c tests/bench/clock.h tests/unit/dense.h "$OLD/tests/" &&
+		cp tests/bench/bench_*.c tests/bench/clock.h "$OLD/tests/bench/" &&
+		cp tests/unit/dense.h "$OLD/tests/unit/" &&
 		(cd "$OLD" && ./configure >/dev/null 2>&1 &&
-		make -s TESTS="bench_phases bench_inhibition bench_matrix" \
-		phyllo-export build/bench_phases build/bench_inhibition \
+		make -s phyllo-export build/bench_phases build/bench_inhibition \
 		build/bench_matrix >/dev/null 2>&1) || OLD=
 	[ -n "$OLD" ] && echo "old code: $BASE ($(git log -1 --format=%s "$BASE" | cut -c1-60)...)" ||
 		echo "old code: $BASE did not build; figures for today's code only"
