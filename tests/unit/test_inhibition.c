@@ -245,6 +245,12 @@ main(void)
 	bounds("bounds, power law, G rising from 0.0005 past the grid's far "
 	    "radius", "count = 700; inhibition = { growth = \"0.0005 + "
 	    "0.006 * t\"; };");
+	/*
+	 * Fast growth: the cuts reach far past the far field's radius, so
+	 * it holds most of them, and is bounded from its grid too.
+	 */
+	bounds("bounds, power law, G = 0.3, the far field from a grid",
+	    "count = 300; inhibition = { growth = 0.3; };");
 	bounds("bounds, power law s = 6, G = 0.2", "count = 120; inhibition = "
 	    "{ growth = 0.2; exponent = 6; };");
 	bounds("bounds, gaussian kernel", "count = 120; inhibition = { kernel "
