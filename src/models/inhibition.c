@@ -171,6 +171,104 @@ settled(const double *phi, size_t n, double *mean, double *spread)
 }
 
 /*
+ * The contact pair at the meristem when the last primordium is born:
+ * the newest primordia where the growth put them, each one's nearest
+ * older neighbours turning either way (para_pairs(), as --info measures
+ * any structure), the pair most of the newest half hold; 0 0 where none
+ * does (alternate leaves).  Whatever the layout written: it is the
+ * pattern the model made, and names its branch.
+ */
+static void
+meristem_pair(const double *phi, const double *S, size_t N, size_t near,
+    int *m, int *n)
+{
+	size_t K = 2 * near + 32 < N ? 2 * near + 32 : N, best = 0;
+	struct result tmp;
+	int (*pair)[2];
+
+	*m = *n = 0;
+	if (K < 3)
+		return;
+	result_init(&tmp, K);
+	for (size_t k = 0; k < K; k++) {
+		size_t i = N - K + k;
+		double r = R0 * exp(S[N - 1] - S[i]);
+
+		tmp.organs[k].pos[0] = r * cos(phi[i]);
+		tmp.organs[k].pos[1] = r * sin(phi[i]);
+	}
+	pair = xcalloc(K, sizeof(*pair));
+	para_pairs(&tmp, pair);
+	/* The most common among the newest half; few, so counted plainly. */
+	for (size_t a = K / 2; a < K; a++) {
+		size_t held = 0;
+
+		if (pair[a][0] == 0)
+			continue;
+		for (size_t b = K / 2; b < K; b++)
+			held += pair[b][0] == pair[a][0] &&
+			    pair[b][1] == pair[a][1];
+		if (held > best) {
+			best = held;
+			*m = pair[a][0];
+			*n = pair[a][1];
+		}
+	}
+	free(pair);
+	result_free(&tmp);
+}
+
+/*
+ * Whether m < n are neighbours in the series a, b, a + b, ..., or one
+ * apart (m and the one after next, as at a triple contact between two
+ * pairs, 5/13 between 5/8 and 8/13): 1; neighbours are 2.
+ */
+static int
+in_series(int a, int b, int m, int n)
+{
+	int x = a, y = b;
+
+	while (x < m && y < 1 << 29) {
+		int z = x + y;
+
+		x = y;
+		y = z;
+	}
+	if (x != m)
+		return 0;
+	return y == n ? 2 : x + y == n ? 1 : 0;
+}
+
+/*
+ * The branch a run followed, from what is sure of it: one divergence
+ * (a spread of a few degrees at most over the last two thirds, as a
+ * spiral settling; multijugate and disordered patterns have tens), and
+ * the contact pair at the meristem, which the angle alone does not give
+ * at fast growth (140.4 degrees at G = 0.2 is the Fibonacci branch's,
+ * with 2/3; 101.2 the Lucas branch's, with 3/4).  A pair of both
+ * series' numbers one apart (1/3) is the Lucas pair it neighbours.
+ */
+#define SPREAD_MAX	10	/* degrees: more, and no one divergence */
+
+static const char *
+regime(size_t N, double mean, double spread, int m, int n)
+{
+	int fib = in_series(1, 2, m, n), luc = in_series(1, 3, m, n);
+
+	if (N < 2)
+		return "none, one primordium";
+	if (spread > SPREAD_MAX)
+		return "none, no one divergence (spread over 10 degrees)";
+	if (mean > 179.5 && m == 0)
+		return "distichous";
+	if (fib == 2 || (fib == 1 && luc != 2))
+		return "fibonacci";
+	if (luc > 0)
+		return "lucas";
+	return "other";
+}
+
+/*
  * The default transient for the slowest growth G of a run.  Each
  * bifurcation on the way down to G needs its own primordia to settle,
  * and there are more of them the slower the growth: measured, the
@@ -196,6 +294,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	struct cut *cuts;
 	size_t terms = 0;
 	struct gap *gaps;
+	int pm, pn;
 
 	N = (size_t)ctx->count;
 	if (P->kernel == K_GAUSSIAN && N > 200000) {
@@ -364,11 +463,9 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	if (spread > 1e-9 || !divergence_rays(mean, N, &res->rays_p,
 	    &res->rays))
 		res->rays = res->rays_p = 0;
-	result_info(res, "settled", 2, mean, spread);
-	/* 99.5016: the Lucas angle, 360 / (3 + tau^-1)... of the 1, 3 series. */
-	result_info_text(res, "regime", fabs(mean - 180) < 5 ? "distichous" :
-	    fabs(mean - GOLDEN_ANGLE) < 2 ? "fibonacci" :
-	    fabs(mean - 99.5016) < 2 ? "lucas" : "other");
+	result_info_labelled(res, "settled", "mean spread", 2, mean, spread);
+	meristem_pair(F.phi, F.S, N, F.near, &pm, &pn);
+	result_info_text(res, "regime", regime(N, mean, spread, pm, pn));
 	result_info(res, "terms", 1, (double)terms);
 	if (F.check)
 		result_info(res, "bound misses", 1, (double)F.misses);

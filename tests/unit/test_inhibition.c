@@ -177,6 +177,58 @@ branch(void)
 }
 
 /*
+ * --info's regime names the branch from what is sure of it: a pattern
+ * of no one divergence is no branch, whatever its mean (the periodic
+ * pattern below averages 137.9 degrees with a spread of 43), and the
+ * Fibonacci branch is known at fast growth by its contact pair at the
+ * meristem, not by an angle near 137.5 (140.4 with 2/3 at G = 0.2,
+ * 141.9 with 1/2 at 0.6).
+ */
+static void
+regime_is(const char *what, const char *cfg, const char *want)
+{
+	struct scene sc;
+	struct result res;
+	const char *text = NULL;
+
+	if (run(cfg, &sc, &res) != 0) {
+		check(0, "%s: runs", what);
+		scene_free(&sc);
+		return;
+	}
+	for (int i = 0; i < res.ninfo; i++)
+		if (strcmp(res.info[i].key, "regime") == 0)
+			text = res.info[i].text;
+	check(text != NULL && strncmp(text, want, strlen(want)) == 0 &&
+	    (text[strlen(want)] == '\0' || text[strlen(want)] == ','),
+	    "%s: regime %s (want %s; settled at %.4f, spread %.3g)", what,
+	    text != NULL ? text : "missing", want, info(&res, "settled", 0),
+	    info(&res, "settled", 1));
+	result_free(&res);
+	scene_free(&sc);
+}
+
+static void
+regimes(void)
+{
+	regime_is("G = 0.2, the Fibonacci branch at 140.4 degrees", "count = "
+	    "300; inhibition = { growth = 0.2; };", "fibonacci");
+	regime_is("G = 0.6, the Fibonacci branch at 141.9 degrees with 1/2",
+	    "count = 300; inhibition = { growth = 0.6; };", "fibonacci");
+	regime_is("G = 0.02, the Fibonacci branch", "count = 600;",
+	    "fibonacci");
+	regime_is("G = 0.05 from G = 0.05 on, a periodic pattern of spread 43",
+	    "count = 800; inhibition = { growth = 0.05; start = 0.05; "
+	    "transient = 5; };", "none");
+	regime_is("G = 0.2 held from the first two, the Lucas branch with 3/4",
+	    "count = 300; inhibition = { growth = 0.2; transient = 0; };",
+	    "lucas");
+	regime_is("G = 1, alternate leaves", "count = 300; inhibition = { "
+	    "growth = 1; };", "distichous");
+	regime_is("one primordium", "count = 1;", "none");
+}
+
+/*
  * With only a count, a head a scene can frame: the oldest at radius 1
  * (radii laid out as Vogel's), and organ sizes within 100 times of
  * each other.
@@ -265,5 +317,6 @@ main(void)
 	    "inhibition = { kernel = \"gaussian\"; radii = \"grown\"; };",
 	    GOLDEN_ANGLE, 1, 1);
 	framed();
+	regimes();
 	return check_failures != 0;
 }
