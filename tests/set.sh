@@ -143,6 +143,18 @@ end
 try "--settings of a compound lists each part's settings as OBJECT:PATH" px --settings scenes/goatsbeard.cfg
 assert "the part and its count" 'grep -q "\"object\": \"Achene\", \"scene\": \"scenes/parts/goatsbeard-pappus.cfg\"" $OUT/stdout && grep -q "{ \"path\": \"Achene:count\"" $OUT/stdout'
 end
+# What the loader refuses given, the panel must not offer: divergence
+# where the angle emerges, the power law's exponent with the Gaussian.
+try "--settings leaves out the settings that do not apply" \
+	px --settings --set 'inhibition.kernel="gaussian"' scenes/sunflower-emerged.cfg
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "no divergence, no inhibition.exponent" '! grep -q "\"path\": \"\(divergence\|inhibition.exponent\)\"" $OUT/stdout'
+assert "the kernel and the growth still there" 'grep -q "\"path\": \"inhibition.kernel\"" $OUT/stdout && grep -q "\"path\": \"inhibition.growth\"" $OUT/stdout'
+end
+try "--cfg refuses them as the loader does" px --cfg --set divergence=100 scenes/sunflower-emerged.cfg
+assert "exit 1, the message" '[ $rc -eq 1 ] && grep -qx "phyllo-export: --set divergence=100: '"'"'divergence'"'"' does not apply to model \"inhibition\", whose angle emerges" $OUT/stderr'
+assert "nothing written" '[ ! -s $OUT/stdout ]'
+end
 try "--settings with --frames is a usage error" px --settings --frames 2 -o "$OUT/x%d" "$SUN"
 refused "gives the scene as written: --frames does not go with it"
 end

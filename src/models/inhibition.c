@@ -498,6 +498,21 @@ inhibition_run(const struct model_ctx *ctx, struct result *res)
 	return inhibition_place(ctx, res, 0);
 }
 
+/* The settings the others leave unused: the loader refuses them given. */
+static const char *
+inhibition_unused(const void *params, size_t k)
+{
+	const struct inhibition *P = params;
+
+	if (k == IN_EXPONENT && P->kernel == K_GAUSSIAN)
+		return "with inhibition.kernel \"gaussian\", which has "
+		    "no exponent";
+	if (k == IN_START && P->given[IN_TRANSIENT] && P->transient == 0)
+		return "with inhibition.transient 0, which leaves no start "
+		    "to fade";
+	return NULL;
+}
+
 const struct model inhibition_model = {
 	.name = "inhibition",
 	.help = "Douady & Couder: each primordium where the others inhibit "
@@ -507,4 +522,5 @@ const struct model inhibition_model = {
 	.run = inhibition_run,
 	.needs_count = 1,
 	.emerges = 1,
+	.unused = inhibition_unused,
 };
