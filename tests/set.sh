@@ -67,6 +67,19 @@ planar.scale="0"|planar.scale 0 is out of range: must be greater than 0
 cuont=5|unknown setting 'cuont' (did you mean count?)
 collision.radius=0.1|'collision' does not apply to model "planar"
 EOF
+# The inhibition model's growth summed past e^700: at what was raised,
+# with what would do.  count 600 at growth 0.02 and start 2 adds to 28.
+printf 'model = "inhibition";\ncount = 600;\n' >"$OUT/inh.cfg"
+try "--set count past the growth's sum: the message at count, with the most primordia" \
+	px --csv --set count=40000 "$OUT/inh.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qxF -- "phyllo-export: --set count=40000: count 40000 is more than inhibition.growth allows: it adds up to 816 over them, past the 700 the model holds (the oldest would lie e^816 meristem radii out): at most 34208 primordia at this growth, or growth at most 0.0171 for 40000" $OUT/stderr'
+assert "and what it says does: 34208 and 0.0171 run" 'px --info --set count=34208 "$OUT/inh.cfg" >/dev/null && px --info --set count=40000 --set inhibition.growth=0.0171 "$OUT/inh.cfg" >/dev/null'
+end
+try "--set growth past the sum: the message at growth" \
+	px --csv --set inhibition.growth=2 "$OUT/inh.cfg"
+assert "exit 1, at growth" '[ $rc -eq 1 ] && grep -qF -- "phyllo-export: --set inhibition.growth=2: inhibition.growth adds up to 1198 over 600 primordia" $OUT/stderr'
+end
 try "an error found placing, at the override too" px --csv --set 'organs.0.scale="1 / (n - 3) + 1"' "$SUN"
 assert "exit 1, names the override and the organ" '[ $rc -eq 1 ] && grep -qxF "phyllo-export: --set organs.0.scale=\"1 / (n - 3) + 1\": organs.scale: division by zero at organ 3" $OUT/stderr'
 end

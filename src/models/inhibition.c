@@ -283,6 +283,157 @@ transient_for(double G)
 	    TRANSIENT * pow(TRANSIENT_G / G, 0.6);
 }
 
+/*
+ * The growth of primordia 1 .. N - 1 summed as start fades into it, the
+ * oldest's radius being e^ of it, with every G_n (g[1 .. N - 1], as
+ * given) times k, a transient T (or, where T < 0, the default for the
+ * least G).  Only for the advice of sum_check(): past 40 T the fade is
+ * below a double's last digit and not computed.
+ */
+static double
+faded_sum(const double *g, size_t N, double start, double T, double k)
+{
+	double s = 0;
+
+	if (T < 0) {
+		double gmin = HUGE_VAL;
+
+		for (size_t n = 1; n < N; n++)
+			gmin = fmin(gmin, k * g[n]);
+		T = transient_for(gmin);
+	}
+	for (size_t n = 1; n < N; n++) {
+		double x = k * g[n];
+
+		if (T > 0 && (double)n < 40 * T)
+			x *= pow(start / x, exp(-(double)n / T));
+		s += x;
+	}
+	return s;
+}
+
+/* x rounded down to 3 significant digits, so that it is on the safe side. */
+static double
+down3(double x)
+{
+	double unit;
+
+	if (!(x > 0))
+		return 0;
+	unit = pow(10, floor(log10(x)) - 2);
+	return floor(x / unit * (1 + 1e-12)) * unit;
+}
+
+/*
+ * The largest v in [lo, hi] (hi failing) whose sum stays within
+ * AGE_MAX, v standing for what by says; to 1e-4 of it, as the advice
+ * prints 3 digits.
+ */
+enum { BY_GROWTH, BY_TRANSIENT, BY_START };
+
+static double
+largest_within(const double *g, size_t N, double start, double T, int by,
+    double lo, double hi)
+{
+	while (hi - lo > 1e-4 * hi) {
+		double v = by == BY_TRANSIENT ? (lo + hi) / 2 : sqrt(lo * hi);
+		double sum = by == BY_GROWTH ? faded_sum(g, N, start, T, v) :
+		    by == BY_TRANSIENT ? faded_sum(g, N, start, v, 1) :
+		    faded_sum(g, N, v, T, 1);
+
+		if (sum <= AGE_MAX)
+			lo = v;
+		else
+			hi = v;
+	}
+	return lo;
+}
+
+/*
+ * The growth summed over the run, start fading into it, must stay
+ * within AGE_MAX: e^700 is about the largest radius a double holds.
+ * Past it, say what would do, where the cause is: where start or
+ * transient was given and growth alone stays within, at them (the
+ * longest transient, the largest start); else at count, which reaches
+ * the limit, or at growth if a --set of it came last (the most
+ * primordia this growth allows, and for a constant growth the fastest
+ * this count allows).  Sums exactly as the run will, S[n] = S[n - 1]
+ * + G_n faded, on g[1 .. N - 1] as given.
+ */
+static int
+sum_check(const struct model_ctx *ctx, const struct inhibition *P,
+    const double *g, size_t N, double T)
+{
+	double sum = 0, base = 0, T_arg = P->given[IN_TRANSIENT] ? T : -1;
+	size_t most = N;
+	int constant = 1, line;
+	char advice[200], e[32];
+
+	for (size_t n = 1; n < N; n++) {
+		double x = g[n];
+
+		base += x;
+		constant &= x == g[1];
+		if (T > 0)
+			x *= pow(P->start / x, exp(-(double)n / T));
+		sum += x;
+		if (sum > AGE_MAX && most == N)
+			most = n;
+	}
+	if (!(sum > AGE_MAX))
+		return 0;
+	/* Digits enough that it reads as past the limit. */
+	snprintf(e, sizeof(e), sum >= AGE_MAX + 0.5 ? "%.0f" : "%.3f", sum);
+	if (base <= AGE_MAX && (P->given[IN_TRANSIENT] ||
+	    P->given[IN_START])) {
+		double smax = largest_within(g, N, P->start, T_arg, BY_START,
+		    g[1] * 1e-9, P->start);
+		int n = 0;
+
+		if (P->given[IN_TRANSIENT])
+			n = snprintf(advice, sizeof(advice), "transient at most "
+			    "%g, ", down3(largest_within(g, N, P->start, T,
+			    BY_TRANSIENT, 0, T)));
+		snprintf(advice + n, sizeof(advice) - (size_t)n, "start at "
+		    "most %g, or at most %zu primordia", down3(smax), most);
+		line = P->given[IN_TRANSIENT] ? P->given[IN_TRANSIENT] :
+		    P->given[IN_START];
+		model_error(ctx, line, "inhibition.start %.9g fading over %.9g "
+		    "primordia adds %.0f to the growth's %.0f over %zu "
+		    "primordia, past the %d the model holds (the oldest would "
+		    "lie e^%s meristem radii out): %s", P->start, T,
+		    sum - base, base, N, AGE_MAX, e, advice);
+		return -1;
+	}
+	if (!constant)
+		snprintf(advice, sizeof(advice), "it passes %d at primordium "
+		    "%zu; fewer primordia or slower growth", AGE_MAX, most);
+	else if (faded_sum(g, N, P->start, T_arg, GROWTH_MIN / g[1]) >
+	    AGE_MAX)
+		snprintf(advice, sizeof(advice), "at most %zu primordia at "
+		    "this growth (no growth from %g up allows %zu)", most,
+		    GROWTH_MIN, N);
+	else
+		snprintf(advice, sizeof(advice), "at most %zu primordia at "
+		    "this growth, or growth at most %g for %zu", most,
+		    down3(g[1] * largest_within(g, N, P->start, T_arg,
+		    BY_GROWTH, GROWTH_MIN / g[1], 1)), N);
+	if (P->given[IN_GROWTH] >= DIAG_LINE_SET && (ctx->count_line <
+	    DIAG_LINE_SET || P->given[IN_GROWTH] > ctx->count_line)) {
+		model_error(ctx, P->given[IN_GROWTH], "inhibition.growth adds "
+		    "up to %s over %zu primordia, past the %d the model holds "
+		    "(the oldest would lie e^%s meristem radii out): %s", e, N,
+		    AGE_MAX, e, advice);
+		return -1;
+	}
+	model_error(ctx, ctx->count_line ? ctx->count_line : GIVEN_AT(P,
+	    IN_GROWTH), "count %zu is more than inhibition.growth allows: "
+	    "it adds up to %s over them, past the %d the model holds (the "
+	    "oldest would lie e^%s meristem radii out): %s", N, e, AGE_MAX,
+	    e, advice);
+	return -1;
+}
+
 int
 inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 {
@@ -331,6 +482,10 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 		gmin = fmin(gmin, g);
 	}
 	T = P->given[IN_TRANSIENT] ? P->transient : transient_for(gmin);
+	if (sum_check(ctx, P, F.S, N, T) != 0) {
+		free(F.S);
+		return -1;
+	}
 	/* Now the least G as faded, which sizes the search's arrays. */
 	gmin = HUGE_VAL;
 	for (size_t n = 1; n <= N; n++) {
@@ -348,14 +503,6 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 			g *= pow(P->start / g, exp(-(double)n / T));
 		F.S[n] = F.S[n - 1] + g;
 		gmin = fmin(gmin, g);
-	}
-	if (F.S[N - 1] > AGE_MAX) {
-		model_error(ctx, GIVEN_AT(P, IN_GROWTH), "inhibition.growth "
-		    "adds up to %.0f over %zu primordia: the oldest would be "
-		    "e^%.0f meristem radii out; the sum must stay under %d",
-		    F.S[N - 1], N, F.S[N - 1], AGE_MAX);
-		free(F.S);
-		return -1;
 	}
 	F.phi = xcalloc(N, sizeof(*F.phi));
 	F.c = xcalloc(N, sizeof(*F.c));
