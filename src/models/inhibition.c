@@ -77,7 +77,8 @@ static const struct row inhibition_rows[] = {
 	  .doc = "primordia over which start fades; 0: none" },
 	[IN_KERNEL] = { .name = "kernel", .type = T_CHOICE, .off = I(kernel),
 	  .words = kernel_names, .defstr = "power",
-	  .doc = "the inhibition: power (1/d^s) or gaussian (seed 003)" },
+	  .doc = "the inhibition: power (1/d^s) or gaussian (bells in the "
+	  "angle, each by 1/age)" },
 	[IN_EXPONENT] = { .name = "exponent", .type = T_FLOAT,
 	  .off = I(exponent), .lo = 0, .hi = 64, .flags = F_LO_OPEN, .def = 3,
 	  .defstr = "3", .doc = "s of the power law" },
