@@ -50,8 +50,9 @@ struct model {
 					   does not apply) */
 	/*
 	 * Why row k of its table does not apply to params as given, its
-	 * other settings leaving it unused ("with kernel \"gaussian\"");
-	 * NULL where it applies.  NULL: every row always applies.
+	 * other settings leaving it unused ("with inhibition.kernel
+	 * \"gaussian\", which has no exponent"); NULL where it applies.
+	 * NULL: every row always applies.
 	 */
 	const char	*(*unused)(const void *params, size_t k);
 };

@@ -232,8 +232,8 @@ scene_applies(const struct scene *sc, const struct table *tab, size_t k,
 /*
  * A setting given that the scene's other settings leave unused, an
  * error as a setting of another model is ("'inhibition.exponent' does
- * not apply with kernel \"gaussian\""): silently ignored, a user would
- * take it for having done something.
+ * not apply with inhibition.kernel \"gaussian\", ..."): ignored, it
+ * would pass for obeyed.
  */
 int
 load_check_applies(struct load *L)
