@@ -312,6 +312,12 @@ assert "the warning names the line, the fraction and the organ, once" '[ "$(cat 
 px --csv "$OUT/rays.cfg" >"$OUT/rays.csv" 2>/dev/null
 assert "and organs n and n+144 do lie on one ray" 'awk -F, "NR > 1 { a[\$1] = atan2(\$4, \$3) } END { for (n = 0; n + 144 < 1000; n++) { d = a[n + 144] - a[n]; if (d < 0) d = -d; if (d > 1e-7 && d < 6.283185) exit 1 } }" $OUT/rays.csv'
 end
+# A line of several values names each (phyllo-export(1), --info).
+printf 'model = "inhibition";\ncount = 300;\n' >"$OUT/inh.cfg"
+try "--info: the inhibition model's settled line names its mean and spread" px --info "$OUT/inh.cfg"
+assert "settled: mean M; spread S" 'grep -Eq "^settled: mean [0-9.e+-]+; spread [0-9.e+-]+$" $OUT/stdout'
+assert "regime: fibonacci" 'grep -qx "regime: fibonacci" $OUT/stdout'
+end
 try "the golden angle makes no rays" px --info "$SUN"
 assert "no rays line, no warning" '! grep -q "^rays:" $OUT/stdout && [ ! -s $OUT/stderr ]'
 end

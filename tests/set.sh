@@ -67,6 +67,19 @@ planar.scale="0"|planar.scale 0 is out of range: must be greater than 0
 cuont=5|unknown setting 'cuont' (did you mean count?)
 collision.radius=0.1|'collision' does not apply to model "planar"
 EOF
+# The inhibition model's growth summed past e^700: at what was raised,
+# with what would do.  count 600 at growth 0.02 and start 2 adds to 28.
+printf 'model = "inhibition";\ncount = 600;\n' >"$OUT/inh.cfg"
+try "--set count past the growth's sum: the message at count, with the most primordia" \
+	px --csv --set count=40000 "$OUT/inh.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "message" 'grep -qxF -- "phyllo-export: --set count=40000: count 40000 is more than inhibition.growth allows: it adds up to 816 over them, past the 700 the model holds (the oldest would lie e^816 meristem radii out): at most 34208 primordia at this growth, or growth at most 0.0171 for 40000" $OUT/stderr'
+assert "and what it says does: 34208 and 0.0171 run" 'px --info --set count=34208 "$OUT/inh.cfg" >/dev/null && px --info --set count=40000 --set inhibition.growth=0.0171 "$OUT/inh.cfg" >/dev/null'
+end
+try "--set growth past the sum: the message at growth" \
+	px --csv --set inhibition.growth=2 "$OUT/inh.cfg"
+assert "exit 1, at growth" '[ $rc -eq 1 ] && grep -qF -- "phyllo-export: --set inhibition.growth=2: inhibition.growth adds up to 1198 over 600 primordia" $OUT/stderr'
+end
 try "an error found placing, at the override too" px --csv --set 'organs.0.scale="1 / (n - 3) + 1"' "$SUN"
 assert "exit 1, names the override and the organ" '[ $rc -eq 1 ] && grep -qxF "phyllo-export: --set organs.0.scale=\"1 / (n - 3) + 1\": organs.scale: division by zero at organ 3" $OUT/stderr'
 end
@@ -142,6 +155,18 @@ assert "an expression quoted as the file quotes it" 'grep -qF "{ \"path\": \"org
 end
 try "--settings of a compound lists each part's settings as OBJECT:PATH" px --settings scenes/goatsbeard.cfg
 assert "the part and its count" 'grep -q "\"object\": \"Achene\", \"scene\": \"scenes/parts/goatsbeard-pappus.cfg\"" $OUT/stdout && grep -q "{ \"path\": \"Achene:count\"" $OUT/stdout'
+end
+# What the loader refuses given, the panel must not offer: divergence
+# where the angle emerges, the power law's exponent with the Gaussian.
+try "--settings leaves out the settings that do not apply" \
+	px --settings --set 'inhibition.kernel="gaussian"' scenes/sunflower-emerged.cfg
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "no divergence, no inhibition.exponent" '! grep -q "\"path\": \"\(divergence\|inhibition.exponent\)\"" $OUT/stdout'
+assert "the kernel and the growth still there" 'grep -q "\"path\": \"inhibition.kernel\"" $OUT/stdout && grep -q "\"path\": \"inhibition.growth\"" $OUT/stdout'
+end
+try "--cfg refuses them as the loader does" px --cfg --set divergence=100 scenes/sunflower-emerged.cfg
+assert "exit 1, the message" '[ $rc -eq 1 ] && grep -qx "phyllo-export: --set divergence=100: '"'"'divergence'"'"' does not apply to model \"inhibition\", whose angle emerges" $OUT/stderr'
+assert "nothing written" '[ ! -s $OUT/stdout ]'
 end
 try "--settings with --frames is a usage error" px --settings --frames 2 -o "$OUT/x%d" "$SUN"
 refused "gives the scene as written: --frames does not go with it"

@@ -77,7 +77,8 @@ static const struct row inhibition_rows[] = {
 	  .doc = "primordia over which start fades; 0: none" },
 	[IN_KERNEL] = { .name = "kernel", .type = T_CHOICE, .off = I(kernel),
 	  .words = kernel_names, .defstr = "power",
-	  .doc = "the inhibition: power (1/d^s) or gaussian (seed 003)" },
+	  .doc = "the inhibition: power (1/d^s) or gaussian (bells in the "
+	  "angle, each by 1/age)" },
 	[IN_EXPONENT] = { .name = "exponent", .type = T_FLOAT,
 	  .off = I(exponent), .lo = 0, .hi = 64, .flags = F_LO_OPEN, .def = 3,
 	  .defstr = "3", .doc = "s of the power law" },
@@ -171,6 +172,104 @@ settled(const double *phi, size_t n, double *mean, double *spread)
 }
 
 /*
+ * The contact pair at the meristem when the last primordium is born:
+ * the newest primordia where the growth put them, each one's nearest
+ * older neighbours turning either way (para_pairs(), as --info measures
+ * any structure), the pair most of the newest half hold; 0 0 where none
+ * does (alternate leaves).  Whatever the layout written: it is the
+ * pattern the model made, and names its branch.
+ */
+static void
+meristem_pair(const double *phi, const double *S, size_t N, size_t near,
+    int *m, int *n)
+{
+	size_t K = 2 * near + 32 < N ? 2 * near + 32 : N, best = 0;
+	struct result tmp;
+	int (*pair)[2];
+
+	*m = *n = 0;
+	if (K < 3)
+		return;
+	result_init(&tmp, K);
+	for (size_t k = 0; k < K; k++) {
+		size_t i = N - K + k;
+		double r = R0 * exp(S[N - 1] - S[i]);
+
+		tmp.organs[k].pos[0] = r * cos(phi[i]);
+		tmp.organs[k].pos[1] = r * sin(phi[i]);
+	}
+	pair = xcalloc(K, sizeof(*pair));
+	para_pairs(&tmp, pair);
+	/* The most common among the newest half; few, so counted plainly. */
+	for (size_t a = K / 2; a < K; a++) {
+		size_t held = 0;
+
+		if (pair[a][0] == 0)
+			continue;
+		for (size_t b = K / 2; b < K; b++)
+			held += pair[b][0] == pair[a][0] &&
+			    pair[b][1] == pair[a][1];
+		if (held > best) {
+			best = held;
+			*m = pair[a][0];
+			*n = pair[a][1];
+		}
+	}
+	free(pair);
+	result_free(&tmp);
+}
+
+/*
+ * Whether m < n are neighbours in the series a, b, a + b, ..., or one
+ * apart (m and the one after next, as at a triple contact between two
+ * pairs, 5/13 between 5/8 and 8/13): 1; neighbours are 2.
+ */
+static int
+in_series(int a, int b, int m, int n)
+{
+	int x = a, y = b;
+
+	while (x < m && y < 1 << 29) {
+		int z = x + y;
+
+		x = y;
+		y = z;
+	}
+	if (x != m)
+		return 0;
+	return y == n ? 2 : x + y == n ? 1 : 0;
+}
+
+/*
+ * The branch a run followed, from what is sure of it: one divergence
+ * (a spread of a few degrees at most over the last two thirds, as a
+ * spiral settling; multijugate and disordered patterns have tens), and
+ * the contact pair at the meristem, which the angle alone does not give
+ * at fast growth (140.4 degrees at G = 0.2 is the Fibonacci branch's,
+ * with 2/3; 101.2 the Lucas branch's, with 3/4).  A pair of both
+ * series' numbers one apart (1/3) is the Lucas pair it neighbours.
+ */
+#define SPREAD_MAX	10	/* degrees: more, and no one divergence */
+
+static const char *
+regime(size_t N, double mean, double spread, int m, int n)
+{
+	int fib = in_series(1, 2, m, n), luc = in_series(1, 3, m, n);
+
+	if (N < 2)
+		return "none, one primordium";
+	if (spread > SPREAD_MAX)
+		return "none, no one divergence (spread over 10 degrees)";
+	if (mean > 179.5 && m == 0)
+		return "distichous";
+	if (fib == 2 || (fib == 1 && luc != 2))
+		return "fibonacci";
+	if (luc > 0)
+		return "lucas";
+	return "other";
+}
+
+/*
  * The default transient for the slowest growth G of a run.  Each
  * bifurcation on the way down to G needs its own primordia to settle,
  * and there are more of them the slower the growth: measured, the
@@ -185,6 +284,157 @@ transient_for(double G)
 	    TRANSIENT * pow(TRANSIENT_G / G, 0.6);
 }
 
+/*
+ * The growth of primordia 1 .. N - 1 summed as start fades into it, the
+ * oldest's radius being e^ of it, with every G_n (g[1 .. N - 1], as
+ * given) times k, a transient T (or, where T < 0, the default for the
+ * least G).  Only for the advice of sum_check(): past 40 T the fade is
+ * below a double's last digit and not computed.
+ */
+static double
+faded_sum(const double *g, size_t N, double start, double T, double k)
+{
+	double s = 0;
+
+	if (T < 0) {
+		double gmin = HUGE_VAL;
+
+		for (size_t n = 1; n < N; n++)
+			gmin = fmin(gmin, k * g[n]);
+		T = transient_for(gmin);
+	}
+	for (size_t n = 1; n < N; n++) {
+		double x = k * g[n];
+
+		if (T > 0 && (double)n < 40 * T)
+			x *= pow(start / x, exp(-(double)n / T));
+		s += x;
+	}
+	return s;
+}
+
+/* x rounded down to 3 significant digits, so that it is on the safe side. */
+static double
+down3(double x)
+{
+	double unit;
+
+	if (!(x > 0))
+		return 0;
+	unit = pow(10, floor(log10(x)) - 2);
+	return floor(x / unit * (1 + 1e-12)) * unit;
+}
+
+/*
+ * The largest v in [lo, hi] (hi failing) whose sum stays within
+ * AGE_MAX, v standing for what by says; to 1e-4 of it, as the advice
+ * prints 3 digits.
+ */
+enum { BY_GROWTH, BY_TRANSIENT, BY_START };
+
+static double
+largest_within(const double *g, size_t N, double start, double T, int by,
+    double lo, double hi)
+{
+	while (hi - lo > 1e-4 * hi) {
+		double v = by == BY_TRANSIENT ? (lo + hi) / 2 : sqrt(lo * hi);
+		double sum = by == BY_GROWTH ? faded_sum(g, N, start, T, v) :
+		    by == BY_TRANSIENT ? faded_sum(g, N, start, v, 1) :
+		    faded_sum(g, N, v, T, 1);
+
+		if (sum <= AGE_MAX)
+			lo = v;
+		else
+			hi = v;
+	}
+	return lo;
+}
+
+/*
+ * The growth summed over the run, start fading into it, must stay
+ * within AGE_MAX: e^700 is about the largest radius a double holds.
+ * Past it, say what would do, where the cause is: where start or
+ * transient was given and growth alone stays within, at them (the
+ * longest transient, the largest start); else at count, which reaches
+ * the limit, or at growth if a --set of it came last (the most
+ * primordia this growth allows, and for a constant growth the fastest
+ * this count allows).  Sums exactly as the run will, S[n] = S[n - 1]
+ * + G_n faded, on g[1 .. N - 1] as given.
+ */
+static int
+sum_check(const struct model_ctx *ctx, const struct inhibition *P,
+    const double *g, size_t N, double T)
+{
+	double sum = 0, base = 0, T_arg = P->given[IN_TRANSIENT] ? T : -1;
+	size_t most = N;
+	int constant = 1, line;
+	char advice[200], e[32];
+
+	for (size_t n = 1; n < N; n++) {
+		double x = g[n];
+
+		base += x;
+		constant &= x == g[1];
+		if (T > 0)
+			x *= pow(P->start / x, exp(-(double)n / T));
+		sum += x;
+		if (sum > AGE_MAX && most == N)
+			most = n;
+	}
+	if (!(sum > AGE_MAX))
+		return 0;
+	/* Digits enough that it reads as past the limit. */
+	snprintf(e, sizeof(e), sum >= AGE_MAX + 0.5 ? "%.0f" : "%.3f", sum);
+	if (base <= AGE_MAX && (P->given[IN_TRANSIENT] ||
+	    P->given[IN_START])) {
+		double smax = largest_within(g, N, P->start, T_arg, BY_START,
+		    g[1] * 1e-9, P->start);
+		int n = 0;
+
+		if (P->given[IN_TRANSIENT])
+			n = snprintf(advice, sizeof(advice), "transient at most "
+			    "%g, ", down3(largest_within(g, N, P->start, T,
+			    BY_TRANSIENT, 0, T)));
+		snprintf(advice + n, sizeof(advice) - (size_t)n, "start at "
+		    "most %g, or at most %zu primordia", down3(smax), most);
+		line = P->given[IN_TRANSIENT] ? P->given[IN_TRANSIENT] :
+		    P->given[IN_START];
+		model_error(ctx, line, "inhibition.start %.9g fading over %.9g "
+		    "primordia adds %.0f to the growth's %.0f over %zu "
+		    "primordia, past the %d the model holds (the oldest would "
+		    "lie e^%s meristem radii out): %s", P->start, T,
+		    sum - base, base, N, AGE_MAX, e, advice);
+		return -1;
+	}
+	if (!constant)
+		snprintf(advice, sizeof(advice), "it passes %d at primordium "
+		    "%zu; fewer primordia or slower growth", AGE_MAX, most);
+	else if (faded_sum(g, N, P->start, T_arg, GROWTH_MIN / g[1]) >
+	    AGE_MAX)
+		snprintf(advice, sizeof(advice), "at most %zu primordia at "
+		    "this growth (no growth from %g up allows %zu)", most,
+		    GROWTH_MIN, N);
+	else
+		snprintf(advice, sizeof(advice), "at most %zu primordia at "
+		    "this growth, or growth at most %g for %zu", most,
+		    down3(g[1] * largest_within(g, N, P->start, T_arg,
+		    BY_GROWTH, GROWTH_MIN / g[1], 1)), N);
+	if (P->given[IN_GROWTH] >= DIAG_LINE_SET && (ctx->count_line <
+	    DIAG_LINE_SET || P->given[IN_GROWTH] > ctx->count_line)) {
+		model_error(ctx, P->given[IN_GROWTH], "inhibition.growth adds "
+		    "up to %s over %zu primordia, past the %d the model holds "
+		    "(the oldest would lie e^%s meristem radii out): %s", e, N,
+		    AGE_MAX, e, advice);
+		return -1;
+	}
+	model_error(ctx, ctx->count_line ? ctx->count_line : GIVEN_AT(P,
+	    IN_GROWTH), "count %zu is more than inhibition.growth allows: "
+	    "it adds up to %s over them, past the %d the model holds (the "
+	    "oldest would lie e^%s meristem radii out): %s", N, e, AGE_MAX,
+	    e, advice);
+	return -1;
+}
+
 int
 inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 {
@@ -196,6 +446,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	struct cut *cuts;
 	size_t terms = 0;
 	struct gap *gaps;
+	int pm, pn;
 
 	N = (size_t)ctx->count;
 	if (P->kernel == K_GAUSSIAN && N > 200000) {
@@ -232,6 +483,10 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 		gmin = fmin(gmin, g);
 	}
 	T = P->given[IN_TRANSIENT] ? P->transient : transient_for(gmin);
+	if (sum_check(ctx, P, F.S, N, T) != 0) {
+		free(F.S);
+		return -1;
+	}
 	/* Now the least G as faded, which sizes the search's arrays. */
 	gmin = HUGE_VAL;
 	for (size_t n = 1; n <= N; n++) {
@@ -249,14 +504,6 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 			g *= pow(P->start / g, exp(-(double)n / T));
 		F.S[n] = F.S[n - 1] + g;
 		gmin = fmin(gmin, g);
-	}
-	if (F.S[N - 1] > AGE_MAX) {
-		model_error(ctx, GIVEN_AT(P, IN_GROWTH), "inhibition.growth "
-		    "adds up to %.0f over %zu primordia: the oldest would be "
-		    "e^%.0f meristem radii out; the sum must stay under %d",
-		    F.S[N - 1], N, F.S[N - 1], AGE_MAX);
-		free(F.S);
-		return -1;
 	}
 	F.phi = xcalloc(N, sizeof(*F.phi));
 	F.c = xcalloc(N, sizeof(*F.c));
@@ -364,11 +611,9 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	if (spread > 1e-9 || !divergence_rays(mean, N, &res->rays_p,
 	    &res->rays))
 		res->rays = res->rays_p = 0;
-	result_info(res, "settled", 2, mean, spread);
-	/* 99.5016: the Lucas angle, 360 / (3 + tau^-1)... of the 1, 3 series. */
-	result_info_text(res, "regime", fabs(mean - 180) < 5 ? "distichous" :
-	    fabs(mean - GOLDEN_ANGLE) < 2 ? "fibonacci" :
-	    fabs(mean - 99.5016) < 2 ? "lucas" : "other");
+	result_info_labelled(res, "settled", "mean spread", 2, mean, spread);
+	meristem_pair(F.phi, F.S, N, F.near, &pm, &pn);
+	result_info_text(res, "regime", regime(N, mean, spread, pm, pn));
 	result_info(res, "terms", 1, (double)terms);
 	if (F.check)
 		result_info(res, "bound misses", 1, (double)F.misses);
@@ -401,6 +646,21 @@ inhibition_run(const struct model_ctx *ctx, struct result *res)
 	return inhibition_place(ctx, res, 0);
 }
 
+/* The settings the others leave unused: the loader refuses them given. */
+static const char *
+inhibition_unused(const void *params, size_t k)
+{
+	const struct inhibition *P = params;
+
+	if (k == IN_EXPONENT && P->kernel == K_GAUSSIAN)
+		return "with inhibition.kernel \"gaussian\", which has "
+		    "no exponent";
+	if (k == IN_START && P->given[IN_TRANSIENT] && P->transient == 0)
+		return "with inhibition.transient 0, which leaves no start "
+		    "to fade";
+	return NULL;
+}
+
 const struct model inhibition_model = {
 	.name = "inhibition",
 	.help = "Douady & Couder: each primordium where the others inhibit "
@@ -410,4 +670,5 @@ const struct model inhibition_model = {
 	.run = inhibition_run,
 	.needs_count = 1,
 	.emerges = 1,
+	.unused = inhibition_unused,
 };

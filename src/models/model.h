@@ -46,7 +46,15 @@ struct model {
 	int		 needs_count;	/* the scene must give count, ... */
 	const char	*count_else;	/* ... or this setting of the group */
 	int		 emerges;	/* the angles are found, not given: the
-					   model sets rays itself */
+					   model sets rays itself (and divergence
+					   does not apply) */
+	/*
+	 * Why row k of its table does not apply to params as given, its
+	 * other settings leaving it unused ("with inhibition.kernel
+	 * \"gaussian\", which has no exponent"); NULL where it applies.
+	 * NULL: every row always applies.
+	 */
+	const char	*(*unused)(const void *params, size_t k);
 };
 
 /* Every model, NULL-terminated (models.c); at most MODELS_MAX. */

@@ -54,5 +54,6 @@ int	 load_group(struct load *, const config_setting_t *,
 	    const char *path, const struct table *, void *base);
 int	 load_ranges(struct load *, const config_setting_t *,
 	    const char *path, const struct table *);
+int	 load_check_applies(struct load *);
 
 #endif

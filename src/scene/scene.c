@@ -192,7 +192,8 @@ load_root(struct load *L, const config_setting_t *root)
 	sc->params = xcalloc(1, model->size);
 	load_defaults(model->settings, sc->params);
 	load_paths(model->settings, sc->params, model->name);
-	if (load_group(L, root, "", &scene_table, sc) < 0)
+	if (load_group(L, root, "", &scene_table, sc) < 0 ||
+	    load_check_applies(L) < 0)
 		return -1;
 	sc->at.line = 1;
 	if (!sc->given[S_NAME])

@@ -107,6 +107,14 @@ int	 scene_load_buffer_as(struct scene *, const char *file,
 	    const char *text, size_t len, const char *object,
 	    const struct loading *);
 void	 scene_free(struct scene *);
+/*
+ * Whether row k of tab (the top level's or the model's) applies to the
+ * scene as loaded; if not, why, into why[sz] ("to model \"inhibition\",
+ * whose angle emerges").  Such a setting given is an error, and
+ * --settings does not offer it.
+ */
+int	 scene_applies(const struct scene *, const struct table *tab,
+	    size_t k, char *why, size_t sz);
 
 struct model_ctx;
 

@@ -212,6 +212,55 @@ unknown(const struct load *L, const config_setting_t *s,
 	    near && *path ? "." : "", near ? near : "", near ? "?)" : "");
 }
 
+int
+scene_applies(const struct scene *sc, const struct table *tab, size_t k,
+    char *why, size_t sz)
+{
+	const char *w = NULL;
+
+	if (tab == &scene_table && k == S_DIVERGENCE && sc->model->emerges)
+		snprintf(why, sz, "to model \"%s\", whose angle emerges",
+		    sc->model->name);
+	else if (tab == sc->model->settings && sc->model->unused != NULL &&
+	    (w = sc->model->unused(sc->params, k)) != NULL)
+		snprintf(why, sz, "%s", w);
+	else
+		return 1;
+	return 0;
+}
+
+/*
+ * A setting given that the scene's other settings leave unused, an
+ * error as a setting of another model is ("'inhibition.exponent' does
+ * not apply with inhibition.kernel \"gaussian\", ..."): ignored, it
+ * would pass for obeyed.
+ */
+int
+load_check_applies(struct load *L)
+{
+	const struct scene *sc = L->sc;
+	const struct model *m = sc->model;
+	const int *given = (const int *)((const char *)sc->params +
+	    m->settings->given);
+	char why[160];
+
+	if (sc->given[S_DIVERGENCE] && !scene_applies(sc, &scene_table,
+	    S_DIVERGENCE, why, sizeof(why))) {
+		diag(ST_SCENE, L->file, sc->given[S_DIVERGENCE], 0,
+		    "'divergence' does not apply %s", why);
+		return -1;
+	}
+	for (size_t k = 0; k < m->settings->n; k++)
+		if (given[k] && !scene_applies(sc, m->settings, k, why,
+		    sizeof(why))) {
+			diag(ST_SCENE, L->file, given[k], 0, "'%s.%s' does "
+			    "not apply %s", m->name, m->settings->rows[k].name,
+			    why);
+			return -1;
+		}
+	return 0;
+}
+
 /*
  * The members of group g, the struct base described by tab, at path.
  * At the top level, a model's name opens that model's group.

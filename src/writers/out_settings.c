@@ -160,18 +160,23 @@ one(struct sink *s, const struct scene *sc, const char *object,
 	sink_puts(s, " }");
 }
 
-/* A table's rows at prefix, into its groups. */
+/*
+ * A table's rows at prefix, into its groups; not those the scene's
+ * other settings leave unused, which the loader would refuse.
+ */
 static void
 rows(struct sink *s, const struct scene *sc, const char *object,
     const char *prefix, const struct table *tab, int *first)
 {
-	char path[PATH_LEN * 2];
+	char path[PATH_LEN * 2], why[160];
 
 	for (size_t i = 0; i < tab->n; i++) {
 		const struct row *r = &tab->rows[i];
 
 		snprintf(path, sizeof(path), "%s%s%s", prefix, *prefix ? "." :
 		    "", r->name);
+		if (!scene_applies(sc, tab, i, why, sizeof(why)))
+			continue;
 		if (r->type == T_GROUP)
 			rows(s, sc, object, path, r->sub, first);
 		else if (r->type != T_RANGES)

@@ -33,9 +33,10 @@ for f in ${*:-$all}; do
 		for a in 'count=300' 'planar.scale=0.05' 'organs.1.tilt="20 * f"' \
 		    'planar={ scale = 0.1; }' 'stretch=[1.0, 2.0, 1.0]' \
 		    'collision.receptacle.shape="cone"' 'Floret:count=3' \
-		    'organs.9.scale=1' 'count.x=1' 'count=1+'; do
+		    'organs.9.scale=1' 'count.x=1' 'count=1+' 'divergence=100' \
+		    'inhibition.exponent=4'; do
 			for s in scenes/sunflower.cfg scenes/coneflower.cfg \
-			    scenes/pinecone.cfg; do
+			    scenes/pinecone.cfg scenes/sunflower-emerged.cfg; do
 				{ printf '%s\n' "$a"; cat "$s"; } >"$c/seed$i"
 				i=$((i + 1))
 			done
