@@ -17,8 +17,8 @@
  * as a Fourier series whose moments each plastochron rescales, so a
  * step costs the same however many came before.  The Gaussian kernel
  * weighs every primordium by 1/age, which changes every step: its
- * series is summed again each step, O(n) a primordium, as in the seed,
- * but each evaluation of E is then a few terms.
+ * series' weights are sums of exponentials that a step multiplies
+ * (inhibition_gauss.c), and each evaluation of E is then a few terms.
  */
 #include <math.h>
 #include <stddef.h>
@@ -109,7 +109,7 @@ field_add(struct field *F, double th)
 	F->c[F->n] = cos(th);
 	F->s[F->n] = sin(th);
 	if (F->gt != NULL) {	/* the Gaussian's cos and sin (m th) */
-		double *t = &F->gt[F->n * 2 * (GMODES + 1)];
+		double *t = inhib_gauss_row(F, F->n);
 
 		t[0] = 1;
 		t[1] = 0;
@@ -449,12 +449,6 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	int pm, pn;
 
 	N = (size_t)ctx->count;
-	if (P->kernel == K_GAUSSIAN && N > 200000) {
-		model_error(ctx, GIVEN_AT(P, IN_KERNEL), "count %zu is more "
-		    "than the gaussian kernel places, 200000: it weighs every "
-		    "primordium, so each costs as many as came before", N);
-		return -1;
-	}
 	F.S = xcalloc(N + 1, sizeof(*F.S));
 	gmin = HUGE_VAL;
 	for (size_t n = 1; n <= N; n++) {
@@ -528,7 +522,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	F.check = how & INHIB_CHECK_BOUNDS;
 	F.nmodes = P->kernel == K_GAUSSIAN ? GMODES : MODES;
 	if (P->kernel == K_GAUSSIAN)
-		F.gt = xcalloc(N * 2 * (GMODES + 1), sizeof(*F.gt));
+		inhib_gauss_init(&F, N, how & INHIB_ALL_PAIRS);
 	else if (F.moments)
 		inhib_far_init(&F, R0 * exp(gmin * (double)near_count(gmin)));
 
@@ -624,7 +618,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	free(F.r);
 	free(born);
 	free(F.fl);
-	free(F.gt);
+	inhib_gauss_free(&F);
 	free(cuts);
 	free(gaps);
 	free(F.cp);

@@ -84,7 +84,13 @@ struct field {
 	double		 m2;		/* sum m^2 |mode m|: E'' at most */
 	double		 gerr;		/* the grid's rounding, at most */
 	double		*gt;		/* Gaussian: per primordium cos and
-					   sin (m phi), m <= GMODES */
+					   sin (m phi), m <= GMODES, in rows */
+	size_t		 grows;		/* for all, or a ring of the newest */
+	int		 gexp;		/* exponentials of its weights, or 0 */
+	double		*gdec, *gin;	/* per one: its decay a step, and the
+					   weight it takes a primordium in */
+	double		*gsum;		/* per mode, cos then sin, and
+					   exponential: its running sum */
 	double		 far_curv;	/* the far field's E'', at most */
 	double		 tail[2];	/* the most its modes past BOUND_MODES
 					   add to E and to E' */
@@ -148,8 +154,13 @@ void	inhib_far_summary(struct field *);
 void	inhib_far_energy(const struct field *, double th, int modes,
 	    double e[3]);
 
-/* The energy (inhibition_kernel.c). */
+/* The Gaussian kernel's modes (inhibition_gauss.c). */
+void	inhib_gauss_init(struct field *, size_t count, int exact);
+double	*inhib_gauss_row(const struct field *, size_t i);
 void	inhib_gauss_step(struct field *);
+void	inhib_gauss_free(struct field *);
+
+/* The energy (inhibition_kernel.c). */
 void	inhib_energy(const struct field *, double th, double e[3]);
 double	inhib_energy_only(const struct field *, double th);
 

@@ -1,44 +1,12 @@
 /*
  * inhibition_kernel.c - the energy E on the meristem's edge and its
  * derivatives: the power law's near primordia one by one, plus the
- * far field's modes; and the Gaussian kernel's modes, summed again each
- * step.
+ * far field's modes (the Gaussian kernel's are all of it:
+ * inhibition_gauss.c).
  */
 #include <math.h>
 
 #include "models/inhibition_impl.h"
-
-/*
- * The Gaussian kernel's whole energy as a Fourier series: its bells
- * summed over their images are (1 + 2 sum e^-(m^2/4) cos(m x)) / (2
- * sqrt(pi)) (Poisson's summation), which after GMODES terms is exact
- * to far below a double's precision.  The weights 1 / age change every
- * step, so the modes are summed again, O(GMODES n), but each energy is
- * then O(GMODES) instead of three exponentials a primordium.
- */
-void
-inhib_gauss_step(struct field *F)
-{
-	for (int m = 0; m <= GMODES; m++)
-		F->Fc[m] = F->Fs[m] = 0;
-	for (size_t i = 0; i < F->n; i++) {
-		const double *t = &F->gt[i * 2 * (GMODES + 1)];
-		double w = 1.0 / (double)(F->n - i);	/* 1 / age */
-
-		for (int m = 0; m <= GMODES; m++) {
-			F->Fc[m] += w * t[2 * m];
-			F->Fs[m] += w * t[2 * m + 1];
-		}
-	}
-	for (int m = 0; m <= GMODES; m++) {
-		double a = (m == 0 ? 0.5 : exp(-m * m / 4.0)) / sqrt(M_PI);
-
-		F->Fc[m] *= a;
-		F->Fs[m] *= a;
-	}
-	F->from = F->n;
-	inhib_far_summary(F);
-}
 
 /*
  * E, E' and E'' at th: each primordium has moved out once more since

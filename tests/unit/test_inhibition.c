@@ -149,6 +149,83 @@ bounds(const char *what, const char *cfg)
 }
 
 /*
+ * Past 2,000 primordia the Gaussian kernel's weights 1/age are sums of
+ * exponentials (inhibition_gauss.c): each within 2e-17 of 1/age by the
+ * trapezoid rule's bound, which leaves the rounding of a sum of some
+ * 280 terms: at most 280 units of the last place, 3e-14, and some 1e-15
+ * measured; with a step h of 0.3 instead of 0.2, 1.2e-13.  Every age to
+ * 20,000 and every twentieth of a decade to the count, for the shortest
+ * such run and the longest.
+ */
+static void
+gauss_weights(void)
+{
+	static const size_t counts[] = { 2001, 10000000 };
+
+	for (size_t c = 0; c < 2; c++) {
+		size_t n = 0, cap = 20000 + 200;
+		double *k = calloc(cap, sizeof(*k)), *w = calloc(cap,
+		    sizeof(*w)), worst = 0, at = 0;
+
+		if (k == NULL || w == NULL)
+			abort();
+		for (double a = 33; a <= 20000 && a <= (double)counts[c]; a++)
+			k[n++] = a;
+		for (int x = 100; x <= 140 && n < cap; x++)
+			if (pow(10, x / 20.0) <= (double)counts[c])
+				k[n++] = floor(pow(10, x / 20.0));
+		inhibition_gauss_weights(counts[c], k, w, n);
+		for (size_t i = 0; i < n; i++)
+			if (fabs(w[i] * k[i] - 1) > worst) {
+				worst = fabs(w[i] * k[i] - 1);
+				at = k[i];
+			}
+		check(worst < 1e-14, "gaussian kernel, %zu primordia: the "
+		    "weights of %zu ages from 33 are 1/age within %.2g of it "
+		    "(at age %.0f)", counts[c], n, worst, at);
+		free(k);
+		free(w);
+	}
+}
+
+/*
+ * And a run so weighed finds the angles that exact weights find: 3,000
+ * primordia both ways, each angle the same within 1e-11 rad.
+ */
+static void
+gauss_same(void)
+{
+	const char *cfg = "count = 3000; inhibition = { kernel = "
+	    "\"gaussian\"; radii = \"grown\"; };";
+	struct scene sc;
+	struct model_ctx ctx;
+	struct result a = { 0 }, b = { 0 };
+	double worst = 0;
+	int rc = load(cfg, &sc);
+
+	if (rc == 0) {
+		scene_model_ctx(&sc, &ctx, NULL);
+		rc = inhibition_place(&ctx, &a, 0) || inhibition_place(&ctx, &b,
+		    INHIB_ALL_PAIRS);
+	}
+	if (rc != 0 || a.count != b.count) {
+		check(0, "gaussian kernel, 3000: runs both ways");
+		scene_free(&sc);
+		return;
+	}
+	for (size_t i = 0; i < a.count; i++)
+		worst = fmax(worst, fabs(remainder(atan2(a.organs[i].pos[1],
+		    a.organs[i].pos[0]) - atan2(b.organs[i].pos[1],
+		    b.organs[i].pos[0]), 2 * M_PI)));
+	check(worst < 1e-11, "gaussian kernel, 3000 primordia: the "
+	    "exponentials' angles are the exact weights' within %.2g rad",
+	    worst);
+	result_free(&a);
+	result_free(&b);
+	scene_free(&sc);
+}
+
+/*
  * The default start follows the Fibonacci branch at every G from 0.5
  * down to 0.0005, the slowest allowed: the contact pair at the meristem
  * (the newest organs, measured with grown radii, where the contacts are
@@ -323,6 +400,11 @@ main(void)
 	    "= \"gaussian\"; };");
 	minima("gaussian kernel", "count = 150; inhibition = { kernel = "
 	    "\"gaussian\"; radii = \"grown\"; };", 0, 0, 1, 7);
+	minima("gaussian kernel past 2000, its weights from exponentials",
+	    "count = 2500; inhibition = { kernel = \"gaussian\"; radii = "
+	    "\"grown\"; };", 0, 0, 1, 499);
+	gauss_weights();
+	gauss_same();
 	branch();
 	settles("fast growth, G = 2", "count = 100; inhibition = { growth = 2; "
 	    "};", 180, 1e-6, 0);
