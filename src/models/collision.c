@@ -311,20 +311,28 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 	coll_add(&C, 0, -1, 0, 1, 0, r, NULL);
 	a_next = angle_mod360(1, alpha) * (M_PI / 180);
 	for (long long n = 1; n < N; n++) {
-		double a = a_next, c = cos(a), s = sin(a), t0 = 0, t, at[2];
+		double a = a_next, c = cos(a), s = sin(a), t0 = 0, s0 = -1, t;
+		double at[2];
 		int32_t row = -1;
 
 		if (radius_at(&C, &env, n, N, &r, &eps) != 0)
 			goto out;
-		if (eps >= 0)
-			t0 = curve_t(&C.cv, curve_s(&C.cv, C.pr[n - 1].t) - eps);
+		/*
+		 * With epsilon the walk starts at t0 = curve_t(s0); the
+		 * exact walk works t0 out only if it must look there.
+		 */
+		if (eps >= 0) {
+			s0 = curve_s(&C.cv, C.pr[n - 1].t) - eps;
+			if (brute)
+				t0 = curve_t(&C.cv, s0);
+		}
 		coll_grid_fit(&C, r);
 		/* The next walk's first cells on their way in meanwhile. */
 		a_next = angle_mod360((double)(n + 1), alpha) * (M_PI / 180);
 		if (!C.nocover)
 			cover_ahead(&C.cover, a_next);
 		t = brute ? coll_place_brute(&C, t0, c, s, r) :
-		    coll_place_exact(&C, n, t0, a, c, s, r, &row, at);
+		    coll_place_exact(&C, n, t0, s0, a, c, s, r, &row, at);
 		if (t > C.cv.tmax)
 			break;
 		/*
@@ -360,6 +368,8 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 	if (how == PLACE_CHECK) {
 		result_info(res, "refine misses", 2, (double)C.refine_misses,
 		    (double)C.refined);
+		result_info(res, "start misses", 2, (double)C.start_misses,
+		    (double)C.starts);
 		result_info(res, "cover misses", 1, (double)cover_check(&C.cover,
 		    &C.cv, C.rmax, CHECK_EVERY, coll_near_point, &C));
 	}

@@ -45,6 +45,7 @@ struct coll {
 	int		 nocover;	/* walk without the cover map */
 	int		 check;		/* test what refine() proves */
 	long long	 refined, refine_misses;
+	long long	 starts, start_misses;	/* check: start_row()'s */
 	double		*law;		/* the radius law sampled, or NULL */
 	double		*law_min;	/* the least of law[i ..], each i */
 	long long	 law_step;	/* every law_step primordia */
@@ -133,12 +134,14 @@ void	coll_grid_fit(struct coll *, double r);
 
 /*
  * The smallest free t >= t0 on meridian (c, s) at angle phi, for
- * primordium n of radius r, exactly; HUGE_VAL: none.  *row is t's row
- * of the cover map, if the walk found it, else -1, and p the curve's
- * point at t (collision_walk.c).
+ * primordium n of radius r, exactly; HUGE_VAL: none.  With s0 >= 0,
+ * t0 is curve_t(s0), worked out only if the walk must look there.
+ * *row is t's row of the cover map, if the walk found it, else -1, and
+ * p the curve's point at t (collision_walk.c).
  */
-double	coll_place_exact(struct coll *, long long n, double t0, double phi,
-	    double c, double s, double r, int32_t *row, double p[2]);
+double	coll_place_exact(struct coll *, long long n, double t0, double s0,
+	    double phi, double c, double s, double r, int32_t *row,
+	    double p[2]);
 /* For cover_check: a primordium's surface within U of p? */
 int	coll_near_point(void *, const double p[3], double U);
 

@@ -305,6 +305,15 @@ cover_agrees(void)
 		    "cell's bound holds at 9 x 9 points of it (%g points "
 		    "beyond, %g cells)", large[i].what,
 		    info(&a, "refine misses", 0), info(&a, "refine misses", 1));
+		/*
+		 * With epsilon, each walk that starts in a row known from
+		 * the arc length alone (start_row()): t0, worked out, lies
+		 * in that row.
+		 */
+		check(info(&a, "start misses", 0) == 0, "%s: every start "
+		    "row found without t0 holds it (%g of %g starts outside it)",
+		    large[i].what, info(&a, "start misses", 0),
+		    info(&a, "start misses", 1));
 		result_free(&a);
 		result_free(&b);
 		scene_free(&sc);
