@@ -60,7 +60,7 @@ while IFS='|' read -r arg message; do
 done <<'EOF'
 planar.scael=0.1|unknown setting 'planar.scael' (did you mean planar.scale?)
 count=0|count 0 is out of range: must be between 1 and 10000000
-count="n + 1"|count: variable 'n' is not available here (a number's expression may use only f and F)
+count="n + 1"|count: variable 'n' is not available here (it may use f and F)
 model="planr"|model "planr" is not one of: planar cylindrical collision area inhibition (did you mean planar?)
 organs.2.tilt="1 + q"|organs.tilt: unknown variable 'q'
 planar.scale="0"|planar.scale 0 is out of range: must be greater than 0
@@ -105,7 +105,9 @@ plan ar=1|'plan ar' is not a setting's name
 count=1+|not a value in scene-file syntax
 count=|not a value in scene-file syntax
 count=5; seed = 3|more than one value
-count.x=1|the path goes through count, which is not a group
+count.x=1|the path goes through count, which is one value, not a group
+planar.2.x=1|the path goes through planar, which is a group: name a setting in it
+leaves.0.tilt=1|the scene has no leaves to number: give the whole list, as leaves=({ ... })
 organs.scale=1|the path goes through organs, which is a list: step into its entries by number (organs.0.scale)
 organs.9.scale=1|organs has 6 entries, numbered from 0
 organs.1=1|set a whole entry, array or list by its name

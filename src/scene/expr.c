@@ -124,6 +124,37 @@ fail(struct parser *P, const char *at, const char *fmt, ...)
 	va_end(ap);
 }
 
+/*
+ * A variable this setting does not have: the message names those it
+ * has, so a user need not look them up ("it may use n, N, t, f and F").
+ */
+static void
+unavailable(struct parser *P, const char *at, const char *name)
+{
+	const char *names[V__MAX + 8];
+	char list[96] = "";
+	size_t k = 0;
+
+	for (int v = 0; v < V__MAX; v++)
+		if (P->vars & EXPR_VAR(v))
+			names[k++] = var_names[v];
+	for (const struct expr_const *c = P->consts; c && c->name && k <
+	    sizeof(names) / sizeof(names[0]); c++)
+		names[k++] = c->name;
+	for (size_t i = 0; i < k; i++) {
+		size_t len = strlen(list);
+
+		snprintf(list + len, sizeof(list) - len, "%s%s", i == 0 ? "" :
+		    i + 1 == k ? " and " : ", ", names[i]);
+	}
+	if (k == 0)
+		fail(P, at, "variable '%s' is not available here: this "
+		    "setting takes no variables", name);
+	else
+		fail(P, at, "variable '%s' is not available here (it may use "
+		    "%s)", name, list);
+}
+
 static int
 failed(const struct parser *P)
 {
@@ -284,8 +315,7 @@ name(struct parser *P)
 		if (strlen(var_names[v]) == len &&
 		    strncmp(var_names[v], at, len) == 0) {
 			if (!(P->vars & EXPR_VAR(v)))
-				fail(P, at, "variable '%s' is not available "
-				    "here", var_names[v]);
+				unavailable(P, at, var_names[v]);
 			else
 				emit(P, OP_VAR, v, 0, 1);
 			return;

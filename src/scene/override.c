@@ -180,7 +180,7 @@ static int
 apply(config_setting_t *root, const struct override *o, unsigned line)
 {
 	char path[PATH_LEN], *c, *next;
-	config_setting_t *at = root, *v;
+	config_setting_t *at = root, *v, *made = NULL;
 	config_t cfg;
 	const char *why;
 
@@ -193,10 +193,15 @@ apply(config_setting_t *root, const struct override *o, unsigned line)
 			if (!config_setting_is_group(at))
 				goto through;
 			if ((in = config_setting_get_member(at, c)) == NULL) {
-				in = config_setting_add(at, c,
+				made = in = config_setting_add(at, c,
 				    CONFIG_TYPE_GROUP);
 				in->line = line;
 			}
+		} else if (at == made) {
+			diag(ST_USAGE, NULL, 0, 0, "--set %s: the scene has no "
+			    "%s to number: give the whole list, as %s=({ ... "
+			    "})", o->arg, name_of(at), name_of(at));
+			return -1;
 		} else if (!config_setting_is_list(at)) {
 			goto through;
 		} else if ((in = config_setting_get_elem(at,
@@ -228,7 +233,9 @@ through:
 	diag(ST_USAGE, NULL, 0, 0, "--set %s: the path goes through %s, which "
 	    "is %s", o->arg, name_of(at), config_setting_is_list(at) ||
 	    config_setting_is_array(at) ? "a list: step into its entries by "
-	    "number (organs.0.scale)" : "not a group");
+	    "number (organs.0.scale)" : config_setting_is_group(at) ?
+	    "a group: name a setting in it (planar.scale)" : "one value, not "
+	    "a group");
 	return -1;
 }
 

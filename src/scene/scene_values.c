@@ -148,7 +148,7 @@ set_number_expr(struct load *L, const config_setting_t *s,
 
 	if (e == NULL) {
 		err_in_string(L, s, err.col, path, err.msg,
-		    strstr(err.msg, "variable") ?
+		    strstr(err.msg, "unknown variable") ?
 		    " (a number's expression may use only f and F)" : "");
 		return -1;
 	}

@@ -152,7 +152,9 @@ test_errors(void)
 	error("max(1 2)", EXPR_ALL, 7,
 	    "expected ',' or ')' in the arguments of 'max'");
 	error("r * 2", EXPR_VAR(V_N) | EXPR_VAR(V_COUNT), 1,
-	    "variable 'r' is not available here");
+	    "variable 'r' is not available here (it may use n and N)");
+	error("n + 1", 0, 1, "variable 'n' is not available here: this "
+	    "setting takes no variables");
 	error("1 / 0", EXPR_ALL, 1, "division by zero");
 	error("sqrt(-1)", EXPR_ALL, 1, "the value is not a finite number");
 	error("", EXPR_ALL, 1, "unexpected end of expression");
