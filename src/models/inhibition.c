@@ -286,10 +286,10 @@ transient_for(double G)
 
 /*
  * The growth of primordia 1 .. N - 1 summed as start fades into it, the
- * oldest's radius being e^ of it, with every G_n (g[1 .. N - 1], as
- * given) times k, a transient T (or, where T < 0, the default for the
- * least G).  Only for the advice of sum_check(): past 40 T the fade is
- * below a double's last digit and not computed.
+ * oldest's radius being e^ of it, with every G_n (g[1 .. N], as given)
+ * times k, a transient T (or, where T < 0, the default for the least G
+ * of all N, as the run takes it).  Only for the advice of sum_check():
+ * past 40 T the fade is below a double's last digit and not computed.
  */
 static double
 faded_sum(const double *g, size_t N, double start, double T, double k)
@@ -299,7 +299,7 @@ faded_sum(const double *g, size_t N, double start, double T, double k)
 	if (T < 0) {
 		double gmin = HUGE_VAL;
 
-		for (size_t n = 1; n < N; n++)
+		for (size_t n = 1; n <= N; n++)
 			gmin = fmin(gmin, k * g[n]);
 		T = transient_for(gmin);
 	}
@@ -391,12 +391,27 @@ sum_check(const struct model_ctx *ctx, const struct inhibition *P,
 		    g[1] * 1e-9, P->start);
 		int n = 0;
 
-		if (P->given[IN_TRANSIENT])
+		/*
+		 * Past a million times N the transient fades nothing more
+		 * that a sum to 1e-4 would see: the search starts there,
+		 * not at a given 1e300 (a thousand halvings of O(N) each).
+		 */
+		if (P->given[IN_TRANSIENT]) {
+			double hi = fmin(T, 1e6 * (double)N);
+
 			n = snprintf(advice, sizeof(advice), "transient at most "
-			    "%g, ", down3(largest_within(g, N, P->start, T,
-			    BY_TRANSIENT, 0, T)));
-		snprintf(advice + n, sizeof(advice) - (size_t)n, "start at "
-		    "most %g, or at most %zu primordia", down3(smax), most);
+			    "%g, ", down3(faded_sum(g, N, P->start, hi, 1) <=
+			    AGE_MAX ? hi : largest_within(g, N, P->start, T,
+			    BY_TRANSIENT, 0, hi)));
+		}
+		/* Fewer primordia only where that leaves each G_n as it is. */
+		if (constant)
+			snprintf(advice + n, sizeof(advice) - (size_t)n, "start "
+			    "at most %g, or at most %zu primordia", down3(smax),
+			    most);
+		else
+			snprintf(advice + n, sizeof(advice) - (size_t)n, "start "
+			    "at most %g", down3(smax));
 		line = P->given[IN_TRANSIENT] ? P->given[IN_TRANSIENT] :
 		    P->given[IN_START];
 		model_error(ctx, line, "inhibition.start %.9g fading over %.9g "

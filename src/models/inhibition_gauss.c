@@ -26,7 +26,7 @@
  * e^-45 / k at most for the ages past GAUSS_NEAR, the only ones they
  * weigh.  So each weight is 1/k to 2e-17 of itself, below a double's
  * rounding; the GAUSS_NEAR newest are weighed exactly.  The test checks
- * every age to 100,000 and some to 10,000,000.
+ * every age to 20,000 and some to 10,000,000.
  *
  * Each exponential's sum over the primordia, G_j = sum h l_j e^(-l_j
  * age) t_i (t_i their cos and sin (m phi_i)), is, a step later, G_j
