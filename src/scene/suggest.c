@@ -1,7 +1,8 @@
 /*
  * suggest.c - "did you mean": the nearest word by edit distance
  * (Damerau's: insert, delete, change, or swap two neighbours), so that
- * 'planar.scael' or "hemisphere" for "hemisphare" gets its correction.
+ * 'planar.scael' or "hemisphere" for "hemisphare" gets its correction;
+ * else the one word it begins ("gauss" for "gaussian").
  * A suggestion never changes what is accepted: the caller's message is
  * still an error.
  */
@@ -55,6 +56,28 @@ distance(const char *a, const char *b, size_t limit)
 	return d[la % 3][lb];
 }
 
+/*
+ * The one word that typed begins, as "gauss" begins "gaussian": a
+ * shortening is too far from its word by edit distance, yet says which
+ * is meant where no other word begins the same.  Three letters at least.
+ */
+static const char *
+only_extension(const char *typed, const char *const *words, size_t n)
+{
+	size_t len = strlen(typed);
+	const char *found = NULL;
+
+	if (len < 3)
+		return NULL;
+	for (size_t i = 0; i < n; i++)
+		if (words[i] != NULL && strncmp(words[i], typed, len) == 0) {
+			if (found != NULL)
+				return NULL;	/* two: no telling */
+			found = words[i];
+		}
+	return found;
+}
+
 const char *
 suggest(const char *typed, const char *const *words, size_t n)
 {
@@ -74,5 +97,5 @@ suggest(const char *typed, const char *const *words, size_t n)
 			nearest = words[i];
 		}
 	}
-	return nearest;
+	return nearest != NULL ? nearest : only_extension(typed, words, n);
 }
