@@ -47,7 +47,7 @@ static int
 make(const struct job *j, int F, struct made *m)
 {
 	struct frame fr = { F, j->frames };
-	struct loading ld = { j->frames ? &fr : NULL, j->set, j->nset, 0 };
+	struct loading ld = { j->frames ? &fr : NULL, j->set, j->nset, 0, 0 };
 	char what[96];
 	int rc;
 
@@ -351,7 +351,8 @@ head_and_tail(const struct job *j, const struct made *m, struct sink *head,
 static int
 run_scenes(const struct job *j)
 {
-	struct loading ld = { NULL, j->set, j->nset, 1 };
+	struct loading ld = { NULL, j->set, j->nset, 1,
+	    (j->writer->opts & TO_LISTING) != 0 };
 	struct compound c;
 	struct sink mem, s;
 	FILE *fp;

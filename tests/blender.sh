@@ -78,6 +78,12 @@ px --csv --set count=300 --set planar.scale=0.05 -o "$OUT/scale.csv" "$OUT/panel
 printf 'model = "collision";\ncount = 300;\ncollision = { receptacle = { shape = "hemisphere"; }; radius = 0.08; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/coll.cfg"
 px --csv -o "$OUT/coll.csv" "$OUT/coll.cfg"
 px --csv --set 'collision.receptacle.shape="cone"' -o "$OUT/cone.csv" "$OUT/coll.cfg"
+# An inhibition scene with the Gaussian kernel, which has no exponent:
+# the panel's field greyed out until the kernel is the power law's.
+printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "gaussian"; growth = 0.1; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/inh.cfg"
+px --csv -o "$OUT/inh.csv" "$OUT/inh.cfg"
+px --csv --set 'inhibition.kernel="power"' -o "$OUT/inh-power.csv" "$OUT/inh.cfg"
+px --csv --set 'inhibition.kernel="power"' --set inhibition.exponent=2 -o "$OUT/inh-exp2.csv" "$OUT/inh.cfg"
 ADDON_ZIP=$TESTBIN/phyllo_import.zip
 # Statically linked: it runs inside the roots, whose libconfig differs.
 ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
@@ -212,7 +218,7 @@ for b in $BLENDERS; do
 		cp "$OUT/panel.cfg" "$D/panel.cfg"
 		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value, save to the scene file, frames" \
 			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
-		checked panel 23
+		checked panel 27
 		end
 	else
 		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"

@@ -160,11 +160,25 @@ assert "the part and its count" 'grep -q "\"object\": \"Achene\", \"scene\": \"s
 end
 # What the loader refuses given, the panel must not offer: divergence
 # where the angle emerges, the power law's exponent with the Gaussian.
-try "--settings leaves out the settings that do not apply" \
+# --settings lists them as not applying, with the loader's reason.
+try "--settings lists the settings that do not apply as such" \
 	px --settings --set 'inhibition.kernel="gaussian"' scenes/sunflower-emerged.cfg
 assert "exit 0" '[ $rc -eq 0 ]'
-assert "no divergence, no inhibition.exponent" '! grep -q "\"path\": \"\(divergence\|inhibition.exponent\)\"" $OUT/stdout'
+assert "divergence: applies false, why" 'grep "\"path\": \"divergence\"" $OUT/stdout | grep -qF "\"applies\": false, \"why\": \"does not apply to model \\\"inhibition\\\", whose angle emerges\""'
+assert "inhibition.exponent: applies false, why" 'grep "\"path\": \"inhibition.exponent\"" $OUT/stdout | grep -qF "\"applies\": false, \"why\": \"does not apply with inhibition.kernel \\\"gaussian\\\", which has no exponent\""'
+assert "no other is flagged" '[ $(grep -c "\"applies\"" $OUT/stdout) -eq 2 ]'
 assert "the kernel and the growth still there" 'grep -q "\"path\": \"inhibition.kernel\"" $OUT/stdout && grep -q "\"path\": \"inhibition.growth\"" $OUT/stdout'
+end
+# The panel finds out from --settings which fields apply after a change,
+# even where the change leaves one the artist changed unused.
+try "--settings lists one given that does not apply, not refused" \
+	px --settings --set 'inhibition.kernel="gaussian"' --set inhibition.exponent=2 scenes/sunflower-emerged.cfg
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "from --set, value 2, applies false" 'grep "\"path\": \"inhibition.exponent\"" $OUT/stdout | grep -q "\"value\": \"2\", \"from\": \"set\".*\"applies\": false"'
+end
+try "and the same scene is refused by every other option" \
+	px --info --set 'inhibition.kernel="gaussian"' --set inhibition.exponent=2 scenes/sunflower-emerged.cfg
+assert "exit 1, the loader's message" '[ $rc -eq 1 ] && grep -qF "phyllo-export: --set inhibition.exponent=2: '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent" $OUT/stderr'
 end
 try "--cfg refuses them as the loader does" px --cfg --set divergence=100 scenes/sunflower-emerged.cfg
 assert "exit 1, the message" '[ $rc -eq 1 ] && grep -qx "phyllo-export: --set divergence=100: '"'"'divergence'"'"' does not apply to model \"inhibition\", whose angle emerges" $OUT/stderr'

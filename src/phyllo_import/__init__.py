@@ -137,6 +137,11 @@ def setting_changed(self, context):
             rebuild(context, top)
         except RuntimeError:
             pass            # rebuild() left the message in st.error
+    else:
+        try:
+            applicability(context, st)  # greyed out at once, all the same
+        except RuntimeError:
+            pass            # Update will say why
 
 
 class PhylloSetting(bpy.types.PropertyGroup):
@@ -152,6 +157,11 @@ class PhylloSetting(bpy.types.PropertyGroup):
     unit: StringProperty()
     choices: StringProperty()   # one a line
     range: StringProperty()     # "1 .. 10000000", for the panel
+    # Whether it applies, as the scene's other settings and the panel's
+    # changes stand, and if not, why: the loader refuses it given then,
+    # so it is greyed out and left out of --set.
+    applies: BoolProperty(default=True)
+    why: StringProperty()
     number: FloatProperty(update=setting_changed, precision=4)
     integer: IntProperty(update=setting_changed)
     choice: EnumProperty(items=choice_items, update=setting_changed)
@@ -197,10 +207,12 @@ class PhylloStructure(bpy.types.PropertyGroup):
                        description="Rebuild as soon as a setting changes, "
                        "while a run takes at most %.1f s" % LIVE_SECONDS)
 
-    def overrides(self):
-        """--set arguments for the settings changed in the panel."""
+    def overrides(self, every=False):
+        """--set arguments for the settings changed in the panel that
+        apply (every: those that do not, too)."""
         return ["%s=%s" % (s.path, s.value()) for s in self.settings
-                if s.changed() and s.value() != ""]
+                if s.changed() and s.value() != "" and
+                (s.applies or every)]
 
 
 def kind_of(s):
@@ -248,6 +260,8 @@ def fill(st, settings):
             item.unit = s.get("unit", "")
             item.range = interval(s)
             item.choices = "\n".join(s.get("choices", []))
+            item.applies = s.get("applies", True)
+            item.why = s.get("why", "")
             if item.kind == "NUMBER":
                 item.number = float(value)
             elif item.kind == "INTEGER":
@@ -298,11 +312,26 @@ def settings_of(context, path, overrides=()):
     return json.loads(run_program(context, args + [path]))
 
 
+def applicability(context, st):
+    """Which settings apply with every change in the panel: a change
+    may leave others unused (a kernel without an exponent) or make them
+    count again.  --settings lists those too, given or not."""
+    listed = {s["path"]: s for s in settings_of(
+        context, bpy.path.abspath(st.scene), st.overrides(every=True))[
+        "settings"]}
+    for item in st.settings:
+        s = listed.get(item.path)
+        if s is not None:
+            item.applies = s.get("applies", True)
+            item.why = s.get("why", "")
+
+
 def rebuild(context, top):
     """Build top's structure again with the panel's settings; on an
     error leave it as it was, the message in the panel."""
     st = top.phyllo
     try:
+        applicability(context, st)
         seconds = build(context, bpy.path.abspath(st.scene), st.frames,
                         st.overrides())
     except RuntimeError as e:
@@ -475,6 +504,7 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
             box = layout.box()
             box.label(text="%s: %s" % (last.path, last.type), icon="INFO")
             for line in wrap("; ".join(w for w in (
+                    not last.applies and last.why,
                     last.doc, last.range and "range " + last.range,
                     last.unit, "default " + last.default,
                     "file " + (last.written or "none")) if w), 44):
@@ -487,6 +517,7 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
                 box.label(text=group)
             # The name, marked when changed, then the field.
             split = box.split(factor=0.4, align=True)
+            split.enabled = item.applies
             split.label(text=item.path.split(".")[-1] +
                         (" *" if item.changed() else ""))
             field = {"NUMBER": "number", "INTEGER": "integer",

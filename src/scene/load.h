@@ -23,6 +23,7 @@ struct load {
 	size_t		 len;
 	struct expr_const consts[3];	/* f and F, for every expression */
 	int		 record;	/* keep each setting as written */
+	int		 listing;	/* keep a given one left unused */
 };
 
 static inline int

@@ -193,7 +193,7 @@ load_root(struct load *L, const config_setting_t *root)
 	load_defaults(model->settings, sc->params);
 	load_paths(model->settings, sc->params, model->name);
 	if (load_group(L, root, "", &scene_table, sc) < 0 ||
-	    load_check_applies(L) < 0)
+	    (!L->listing && load_check_applies(L) < 0))
 		return -1;
 	sc->at.line = 1;
 	if (!sc->given[S_NAME])
@@ -251,6 +251,7 @@ scene_load_buffer_as(struct scene *sc, const char *file, const char *text,
 	} else if (ld == NULL || override_apply(config_root_setting(&cfg),
 	    ld->set, ld->nset, object) == 0) {
 		L.record = ld != NULL && ld->record;
+		L.listing = ld != NULL && ld->listing;
 		rc = load_root(&L, config_root_setting(&cfg));
 		if (rc == 0 && L.record) {
 			sc->text = xmalloc(len + 1);

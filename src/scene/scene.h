@@ -85,6 +85,11 @@ struct loading {
 	struct override	*set;
 	int		 nset;
 	int		 record;
+	/*
+	 * A listing (--settings): a setting given that the scene's
+	 * others leave unused is kept, to be listed as such, not refused.
+	 */
+	int		 listing;
 };
 
 /* A setting as the scene (or --set) wrote it. */

@@ -12,6 +12,12 @@
  *	    "value": "0.04", "from": "file", "line": 4, "default": "1",
  *	    "min": 0, "min_open": true, "unit": "length",
  *	    "doc": "Vogel's c: ..." }, ... ] }
+ *
+ * A setting the scene's others leave unused is listed too, with
+ * "applies": false and the loader's reason ("why"), given or not: the
+ * panel greys it out and leaves it out of its --set, and finds which
+ * apply after each change from this listing alone (a run with such a
+ * setting given would be refused).
  */
 #include <math.h>
 #include <stdio.h>
@@ -92,7 +98,7 @@ default_text(const struct scene *sc, const struct row *r, char *buf,
 
 static void
 one(struct sink *s, const struct scene *sc, const char *object,
-    const char *path, const struct row *r, int *first)
+    const char *path, const struct row *r, const char *why, int *first)
 {
 	const struct written *w = find_written(sc, path);
 	char full[PATH_LEN * 2 + NAME_LEN], def[96];
@@ -155,32 +161,43 @@ one(struct sink *s, const struct scene *sc, const char *object,
 		key(s, "unit");
 		json_string(s, r->unit);
 	}
+	if (why != NULL) {
+		char text[192];
+
+		key(s, "applies");
+		sink_puts(s, "false");
+		key(s, "why");
+		snprintf(text, sizeof(text), "does not apply %s", why);
+		json_string(s, text);
+	}
 	key(s, "doc");
 	json_string(s, r->doc != NULL ? r->doc : "");
 	sink_puts(s, " }");
 }
 
 /*
- * A table's rows at prefix, into its groups; not those the scene's
- * other settings leave unused, which the loader would refuse.
+ * A table's rows at prefix, into its groups; why (or NULL): the reason
+ * the group does not apply, which its rows share.
  */
 static void
 rows(struct sink *s, const struct scene *sc, const char *object,
-    const char *prefix, const struct table *tab, int *first)
+    const char *prefix, const struct table *tab, const char *why,
+    int *first)
 {
-	char path[PATH_LEN * 2], why[160];
+	char path[PATH_LEN * 2], own[160];
 
 	for (size_t i = 0; i < tab->n; i++) {
 		const struct row *r = &tab->rows[i];
+		const char *w = why;
 
 		snprintf(path, sizeof(path), "%s%s%s", prefix, *prefix ? "." :
 		    "", r->name);
-		if (!scene_applies(sc, tab, i, why, sizeof(why)))
-			continue;
+		if (w == NULL && !scene_applies(sc, tab, i, own, sizeof(own)))
+			w = own;
 		if (r->type == T_GROUP)
-			rows(s, sc, object, path, r->sub, first);
+			rows(s, sc, object, path, r->sub, w, first);
 		else if (r->type != T_RANGES)
-			one(s, sc, object, path, r, first);
+			one(s, sc, object, path, r, w, first);
 	}
 }
 
@@ -191,11 +208,12 @@ scene_settings(struct sink *s, const struct scene *sc, const char *object,
 {
 	char prefix[PATH_LEN];
 
-	rows(s, sc, object, "", &scene_table, first);
-	rows(s, sc, object, sc->model->name, sc->model->settings, first);
+	rows(s, sc, object, "", &scene_table, NULL, first);
+	rows(s, sc, object, sc->model->name, sc->model->settings, NULL,
+	    first);
 	for (size_t i = 0; i < sc->nranges; i++) {
 		snprintf(prefix, sizeof(prefix), "organs.%zu", i);
-		rows(s, sc, object, prefix, &range_table, first);
+		rows(s, sc, object, prefix, &range_table, NULL, first);
 	}
 }
 

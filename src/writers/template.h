@@ -22,6 +22,8 @@
 #define TO_MESHES	0x10	/* writes the organ objects' meshes */
 #define TO_SIZES	0x20	/* tells every format's size: reads what
 				   each reads */
+#define TO_LISTING	0x40	/* lists settings the others leave unused,
+				   given or not: the loader keeps them */
 
 struct tmpl_ctx {
 	const struct result	*r;

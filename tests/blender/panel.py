@@ -11,7 +11,9 @@
 # --csv is DIR/base.csv, with --set count=300 DIR/count.csv, and with
 # --set count=300 --set planar.scale=0.05 DIR/scale.csv; and DIR/coll.cfg
 # a collision scene on a hemisphere (DIR/coll.csv), DIR/cone.csv with
-# --set collision.receptacle.shape="cone".
+# --set collision.receptacle.shape="cone"; DIR/inh.cfg an inhibition
+# scene with the Gaussian kernel (DIR/inh.csv), DIR/inh-power.csv with
+# the power law's, DIR/inh-exp2.csv with its exponent 2 too.
 # Prints "check: ..." lines like check.py.
 import csv
 import os
@@ -173,6 +175,32 @@ bpy.ops.import_scene.phyllotaxis(filepath=os.path.join(
 check(setting("collision.receptacle.shape").choice == "(none)" and
       bpy.context.scene.phyllo_structure.phyllo.overrides() == [],
       "a shape not given reads (none), and is no change")
+
+# A setting the others leave unused: greyed out, and out of --set.
+bpy.ops.import_scene.phyllotaxis(filepath=os.path.join(folder, "inh.cfg"))
+st = bpy.context.scene.phyllo_structure.phyllo
+exponent, kernel = setting("inhibition.exponent"), setting("inhibition.kernel")
+check(not exponent.applies and "gaussian" in exponent.why and
+      kernel.applies and same(positions(), from_csv("inh.csv")),
+      "the Gaussian kernel's scene: the exponent listed, not applying "
+      "(%r)" % exponent.why)
+kernel.choice = "power"
+check(exponent.applies and not st.error and
+      same(positions(), from_csv("inh-power.csv")),
+      "the kernel chosen from the menu: the exponent applies again, and "
+      "the structure is the power law's (%r)" % st.error)
+exponent.number = 2
+check(same(positions(), from_csv("inh-exp2.csv")) and
+      sorted(st.overrides()) == ['inhibition.exponent=2',
+                                 'inhibition.kernel="power"'],
+      "the exponent changed: as --csv with both --set (%s)"
+      % st.overrides())
+kernel.choice = "gaussian"
+check(not st.error and not exponent.applies and
+      same(positions(), from_csv("inh.csv")) and st.overrides() == [] and
+      st.overrides(every=True) == ["inhibition.exponent=2"],
+      "back to the Gaussian: the changed exponent kept but not sent, "
+      "no error (%r), the file's structure again" % st.error)
 
 bpy.ops.import_scene.phyllotaxis(filepath=scene, frames=5)
 sc = bpy.context.scene

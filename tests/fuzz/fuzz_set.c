@@ -3,7 +3,8 @@
  * the argument (OBJECT:PATH=VALUE), the rest a scene file.  The
  * argument is parsed, put into the scene as it loads (keeping every
  * setting as written), spliced into the scene's text as --cfg does, and
- * its strings written as JSON as --settings does.
+ * its strings written as JSON as --settings does; loaded again as
+ * --settings loads it, keeping settings the others leave unused.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -33,8 +34,9 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	arg[alen] = '\0';
 	sink_init(&s, NULL);
 	json_string(&s, arg);
-	if (override_parse(arg, &o) == 0) {
-		struct loading ld = { NULL, &o, 1, 1 };
+	for (int listing = 0, ok = override_parse(arg, &o) == 0; ok &&
+	    listing < 2; listing++) {
+		struct loading ld = { NULL, &o, 1, 1, listing };
 		struct scene sc;
 		const char *text = nl != NULL ? (const char *)nl + 1 : "";
 		size_t len = nl != NULL ? size - alen - 1 : 0;
