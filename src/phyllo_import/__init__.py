@@ -504,7 +504,6 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
             box = layout.box()
             box.label(text="%s: %s" % (last.path, last.type), icon="INFO")
             for line in wrap("; ".join(w for w in (
-                    not last.applies and last.why,
                     last.doc, last.range and "range " + last.range,
                     last.unit, "default " + last.default,
                     "file " + (last.written or "none")) if w), 44):
@@ -523,6 +522,9 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
             field = {"NUMBER": "number", "INTEGER": "integer",
                      "CHOICE": "choice"}.get(item.kind, "text")
             split.prop(item, field, text="")
+            if not item.applies:
+                for line in wrap(item.why, 44):
+                    box.label(text=line)
         row = layout.row()
         row.operator("phyllo.save")
         row.operator("phyllo.revert")
