@@ -18,6 +18,7 @@
 #include "writers/output.h"
 #include "progress.h"
 #include "scene/override.h"
+#include "scene/suggest.h"
 #include "run.h"
 #include "writers/writer.h"
 
@@ -164,6 +165,30 @@ size_arg(const char *arg, double *bytes)
 	return 0;
 }
 
+/*
+ * An unknown option, and the long option it is a slip of, if one is
+ * ("--inof": did you mean --info?); the usage after.
+ */
+static void
+unknown_option(const char *arg, const struct option *longopts)
+{
+	const char *words[64], *near = NULL;
+	char typed[64];
+	size_t n = 0;
+
+	if (strncmp(arg, "--", 2) == 0) {
+		/* What comes before "=": --tempalte=x is --template's. */
+		snprintf(typed, sizeof(typed), "%.*s", (int)strcspn(arg + 2,
+		    "="), arg + 2);
+		for (; longopts[n].name != NULL && n < 64; n++)
+			words[n] = longopts[n].name;
+		near = suggest(typed, words, n);
+	}
+	diag(ST_USAGE, NULL, 0, 0, "unknown option %s%s%s%s", arg, near ?
+	    " (did you mean --" : "", near ? near : "", near ? "?)" : "");
+	usage(stderr);
+}
+
 /* Long options beyond the writers' own: output, template, arrays, ... */
 enum { OPT_WRITER = 256, NOPTIONS = 10 };
 
@@ -236,9 +261,7 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 			usage(stderr);
 			return ST_USAGE;
 		case '?':
-			diag(ST_USAGE, NULL, 0, 0, "unknown option %s",
-			    argv[optind - 1]);
-			usage(stderr);
+			unknown_option(argv[optind - 1], longopts);
 			return ST_USAGE;
 		default:
 			if (a->writer != NULL &&

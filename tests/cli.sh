@@ -50,6 +50,12 @@ end
 try "an unknown option is a usage error" px --csv --frobnicate "$GOOD"
 refused "unknown option --frobnicate"
 end
+try "a slip of an option's name says which it was meant to be" px --inof "$GOOD"
+refused "unknown option --inof (did you mean --info?)"
+end
+try "and of one with an argument, the argument left out of it" px --csv --tempalte=x.tmpl "$GOOD"
+refused "unknown option --tempalte=x.tmpl (did you mean --template?)"
+end
 
 try "-o without a file is a usage error" px --csv "$GOOD" -o
 refused "option -o needs an argument"
