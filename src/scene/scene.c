@@ -214,7 +214,7 @@ scene_load_buffer_as(struct scene *sc, const char *file, const char *text,
 {
 	const struct frame *fr = ld != NULL ? ld->frame : NULL;
 	struct load L = { sc, file, text, len,
-	    { { "f", 0 }, { "F", 1 }, { NULL, 0 } }, 0 };
+	    { { "f", 0 }, { "F", 1 }, { NULL, 0 } }, 0, 0 };
 	config_t cfg;
 	char *ready;
 	int rc = -1, nul_line;
