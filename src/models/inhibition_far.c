@@ -83,6 +83,24 @@ far_radius(double s, int M)
  */
 #define FAST_GRID	5
 
+/*
+ * The grid of the far field's values for M modes: as few points as
+ * hold them, 64 at least.
+ */
+void
+inhib_far_grid(struct field *F, int M)
+{
+	for (F->grid = 64; F->grid < 2 * M + 2; F->grid *= 2)
+		;
+	F->gv = xcalloc((size_t)F->grid, sizeof(*F->gv));
+	F->gd = xcalloc((size_t)F->grid, sizeof(*F->gd));
+	F->tw = xcalloc((size_t)F->grid, sizeof(*F->tw));
+	for (int j = 0; j < F->grid / 2; j++) {
+		F->tw[2 * j] = cos(2 * M_PI * j / F->grid);
+		F->tw[2 * j + 1] = sin(2 * M_PI * j / F->grid);
+	}
+}
+
 void
 inhib_far_init(struct field *F, double inside)
 {
@@ -104,17 +122,8 @@ inhib_far_init(struct field *F, double inside)
 		M = hi;
 		F->far_r = far_radius(2 * lam, M);
 	}
-	if (M > MODES || log(inside) > FAST_GRID * log(F->far_r)) {
-		for (F->grid = 64; F->grid < 2 * M + 2; F->grid *= 2)
-			;
-		F->gv = xcalloc((size_t)F->grid, sizeof(*F->gv));
-		F->gd = xcalloc((size_t)F->grid, sizeof(*F->gd));
-		F->tw = xcalloc((size_t)F->grid, sizeof(*F->tw));
-		for (int j = 0; j < F->grid / 2; j++) {
-			F->tw[2 * j] = cos(2 * M_PI * j / F->grid);
-			F->tw[2 * j + 1] = sin(2 * M_PI * j / F->grid);
-		}
-	}
+	if (M > MODES || log(inside) > FAST_GRID * log(F->far_r))
+		inhib_far_grid(F, M);
 	F->nmodes = M;
 	/* Moment (j, m), m <= j, m = j mod 2, at row[m] + (j - m) / 2. */
 	F->row[0] = 0;
@@ -145,7 +154,12 @@ far_factors(const struct field *F, double t, double f[MODES_MAX + 1])
 		f[j] = f[j - 1] * x;
 }
 
-/* What bounds the far field: its curvature, its least, its tails. */
+static void	far_grid(struct field *);
+
+/*
+ * What bounds the far field: its curvature, its least, its tails, and
+ * its values on the grid, where it has one.
+ */
 void
 inhib_far_summary(struct field *F)
 {
@@ -162,6 +176,8 @@ inhib_far_summary(struct field *F)
 		}
 	}
 	F->far_least = fmax(0, F->far_least);
+	if (F->grid > 0)
+		far_grid(F);
 }
 
 /*
@@ -384,8 +400,6 @@ inhib_far_step(struct field *F)
 		F->Fs[m] = s;
 	}
 	inhib_far_summary(F);
-	if (F->grid > 0)
-		far_grid(F);
 }
 
 /*

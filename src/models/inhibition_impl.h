@@ -148,6 +148,7 @@ pull_at(const struct field *F, double q)
 
 /* The far field (inhibition_far.c). */
 void	inhib_far_init(struct field *, double inside);
+void	inhib_far_grid(struct field *, int modes);
 double	inhib_far_least(const struct field *, double lo, double hi);
 void	inhib_far_step(struct field *);
 void	inhib_far_summary(struct field *);
