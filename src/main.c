@@ -166,22 +166,57 @@ size_arg(const char *arg, double *bytes)
 }
 
 /*
- * An unknown option, and the long option it is a slip of, if one is
+ * An option getopt_long() did not take: arg as given, opt its optopt
+ * (the letter of an unknown short one, the value of a long one given
+ * an argument it does not take, 0 for an unknown or ambiguous long
+ * one).  A slip of a long one's name gets the name it was meant to be
  * ("--inof": did you mean --info?); the usage after.
  */
 static void
-unknown_option(const char *arg, const struct option *longopts)
+bad_option(const char *arg, int opt, const struct option *longopts)
 {
-	const char *words[64], *near = NULL;
-	char typed[64];
-	size_t n = 0;
+	const char *words[64], *near = NULL, *name = arg + 2;
+	char list[256] = "";
+	size_t n = 0, len = strcspn(name, "="), matches = 0;
 
-	if (strncmp(arg, "--", 2) == 0) {
-		/* What comes before "=": --tempalte=x is --template's. */
-		snprintf(typed, sizeof(typed), "%.*s", (int)strcspn(arg + 2,
-		    "="), arg + 2);
-		for (; longopts[n].name != NULL && n < 64; n++)
-			words[n] = longopts[n].name;
+	if (opt != 0) {
+		/*
+		 * arg is the word getopt_long() is past: a long option's
+		 * with "=" (--csv=x), or the word before a short one's
+		 * cluster (-qx): which, only the option's value says.
+		 */
+		for (n = 0; longopts[n].name != NULL; n++)
+			if (longopts[n].val == opt && longopts[n].has_arg ==
+			    no_argument && strncmp(arg, "--", 2) == 0 &&
+			    name[len] == '=' && len > 0 &&
+			    strncmp(longopts[n].name, name, len) == 0)
+				break;
+		if (longopts[n].name != NULL)
+			diag(ST_USAGE, NULL, 0, 0, "option --%s takes no "
+			    "argument", longopts[n].name);
+		else
+			diag(ST_USAGE, NULL, 0, 0, "unknown option -%c", opt);
+		usage(stderr);
+		return;
+	}
+	for (; n < 64 && longopts[n].name != NULL; n++) {
+		words[n] = longopts[n].name;
+		if (len > 0 && strncmp(words[n], name, len) == 0) {
+			matches++;
+			snprintf(list + strlen(list), sizeof(list) - strlen(list),
+			    "%s--%s", matches > 1 ? ", " : "", words[n]);
+		}
+	}
+	if (matches > 1) {
+		diag(ST_USAGE, NULL, 0, 0, "option --%.*s is ambiguous: %s",
+		    (int)len, name, list);
+		usage(stderr);
+		return;
+	}
+	if (len > 0 && len < 64) {
+		char typed[64];
+
+		snprintf(typed, sizeof(typed), "%.*s", (int)len, name);
 		near = suggest(typed, words, n);
 	}
 	diag(ST_USAGE, NULL, 0, 0, "unknown option %s%s%s%s", arg, near ?
@@ -261,7 +296,7 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 			usage(stderr);
 			return ST_USAGE;
 		case '?':
-			unknown_option(argv[optind - 1], longopts);
+			bad_option(argv[optind - 1], optopt, longopts);
 			return ST_USAGE;
 		default:
 			if (a->writer != NULL &&

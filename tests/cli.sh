@@ -56,6 +56,15 @@ end
 try "and of one with an argument, the argument left out of it" px --csv --tempalte=x.tmpl "$GOOD"
 refused "unknown option --tempalte=x.tmpl (did you mean --template?)"
 end
+try "a shortening of two options names both" px --csv --se count=3 "$GOOD"
+refused "option --se is ambiguous: --settings, --set"
+end
+try "an option without an argument given one says so" px --csv=x "$GOOD"
+refused "option --csv takes no argument"
+end
+try "an unknown short option in a cluster is named, not the word before it" px --csv -qx "$GOOD"
+refused "unknown option -q\$"
+end
 
 try "-o without a file is a usage error" px --csv "$GOOD" -o
 refused "option -o needs an argument"
