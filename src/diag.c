@@ -23,10 +23,21 @@ diag_context(const char *what)
 	snprintf(context, sizeof(context), "%s", what != NULL ? what : "");
 }
 
+static int hushed;
+
+void
+diag_hush(int on)
+{
+	hushed += on ? 1 : -1;
+}
+
 void
 diag(enum status st, const char *file, int line, int col, const char *fmt, ...)
 {
 	va_list ap;
+
+	if (hushed > 0)
+		return;
 
 	fprintf(stderr, "%s: ", diag_progname);
 	if (line >= DIAG_LINE_SET && line - DIAG_LINE_SET < nset)

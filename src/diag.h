@@ -24,6 +24,13 @@ void	 diag(enum status st, const char *file, int line, int col,
 enum status diag_status(void);
 
 /*
+ * While hushed (diag_hush(1), as many times as diag_hush(0) undoes),
+ * nothing is printed and the status stays: for a trial, as the loader's
+ * of a file without its --set (scene_tables.c).
+ */
+void	 diag_hush(int on);
+
+/*
  * While set, every message names this after its position ("frame 3 of
  * 10 (f = 0.222222222)"); NULL clears it.  The text is copied.
  */

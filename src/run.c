@@ -47,7 +47,8 @@ static int
 make(const struct job *j, int F, struct made *m)
 {
 	struct frame fr = { F, j->frames };
-	struct loading ld = { j->frames ? &fr : NULL, j->set, j->nset, 0, 0 };
+	struct loading ld = { .frame = j->frames ? &fr : NULL, .set = j->set,
+	    .nset = j->nset };
 	char what[96];
 	int rc;
 
@@ -351,8 +352,8 @@ head_and_tail(const struct job *j, const struct made *m, struct sink *head,
 static int
 run_scenes(const struct job *j)
 {
-	struct loading ld = { NULL, j->set, j->nset, 1,
-	    (j->writer->opts & TO_LISTING) != 0 };
+	struct loading ld = { .set = j->set, .nset = j->nset, .record = 1,
+	    .listing = (j->writer->opts & TO_LISTING) != 0 };
 	struct compound c;
 	struct sink mem, s;
 	FILE *fp;

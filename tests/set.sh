@@ -180,6 +180,27 @@ try "and the same scene is refused by every other option" \
 	px --info --set 'inhibition.kernel="gaussian"' --set inhibition.exponent=2 scenes/sunflower-emerged.cfg
 assert "exit 1, the loader's message" '[ $rc -eq 1 ] && grep -qF "phyllo-export: --set inhibition.exponent=2: '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent" $OUT/stderr'
 end
+# A file that gives the exponent, switched to the Gaussian by --set: the
+# file's exponent ignored with a warning (so the panel's menu works).
+printf 'model = "inhibition";\ncount = 40;\ninhibition = { kernel = "power"; exponent = 3; growth = 0.1; };\n' >"$OUT/inh-exp.cfg"
+printf 'model = "inhibition";\ncount = 40;\ninhibition = { kernel = "gaussian"; growth = 0.1; };\n' >"$OUT/inh-gauss.cfg"
+px --csv -o "$OUT/inh-gauss.csv" "$OUT/inh-gauss.cfg"
+try "--set that leaves a setting of the file unused: it is ignored, with a warning" \
+	px --csv --frames 2 -o "$OUT/inh-set%d.csv" --set 'inhibition.kernel="gaussian"' "$OUT/inh-exp.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "one warning, at the file's line, saying why" '[ $(wc -l <$OUT/stderr) -eq 1 ] && grep -qF "phyllo-export: $OUT/inh-exp.cfg:3: warning: frame 1 of 2 (f = 0): '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent, as --set made it: ignored" $OUT/stderr'
+assert "the Gaussian's structure" 'cmp -s "$OUT/inh-set1.csv" "$OUT/inh-gauss.csv"'
+end
+printf 'model = "inhibition";\ncount = 40;\ninhibition = { kernel = "gaussian"; exponent = 3; growth = 0.1; };\n' >"$OUT/inh-bad.cfg"
+try "a file that gives a setting its own others leave unused is refused, --set or not" \
+	px --csv --set count=30 --set inhibition.growth=0.2 "$OUT/inh-bad.cfg"
+assert "exit 1, at the file's line" '[ $rc -eq 1 ] && grep -qxF "phyllo-export: $OUT/inh-bad.cfg:3: '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent" $OUT/stderr'
+end
+try "--cfg refuses the file's unused one: the file written would not load" \
+	px --cfg --set 'inhibition.kernel="gaussian"' "$OUT/inh-exp.cfg"
+assert "exit 1, says to take it out" '[ $rc -eq 1 ] && grep -qF "inh-exp.cfg:3: '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent, as --set makes it, and the file written would not load: take it out of the file first" $OUT/stderr'
+assert "nothing written" '[ ! -s $OUT/stdout ]'
+end
 try "--cfg refuses them as the loader does" px --cfg --set divergence=100 scenes/sunflower-emerged.cfg
 assert "exit 1, the message" '[ $rc -eq 1 ] && grep -qx "phyllo-export: --set divergence=100: '"'"'divergence'"'"' does not apply to model \"inhibition\", whose angle emerges" $OUT/stderr'
 assert "nothing written" '[ ! -s $OUT/stdout ]'

@@ -22,8 +22,10 @@ struct load {
 	const char	*text;		/* the file as written, for columns */
 	size_t		 len;
 	struct expr_const consts[3];	/* f and F, for every expression */
+	const char	*object;	/* the part it makes, or "" */
 	int		 record;	/* keep each setting as written */
 	int		 listing;	/* keep a given one left unused */
+	int		 overridden;	/* --set given */
 };
 
 static inline int

@@ -213,8 +213,9 @@ scene_load_buffer_as(struct scene *sc, const char *file, const char *text,
     size_t len, const char *object, const struct loading *ld)
 {
 	const struct frame *fr = ld != NULL ? ld->frame : NULL;
-	struct load L = { sc, file, text, len,
-	    { { "f", 0 }, { "F", 1 }, { NULL, 0 } }, 0, 0 };
+	struct load L = { .sc = sc, .file = file, .text = text, .len = len,
+	    .consts = { { "f", 0 }, { "F", 1 }, { NULL, 0 } },
+	    .object = object };
 	config_t cfg;
 	char *ready;
 	int rc = -1, nul_line;
@@ -252,6 +253,7 @@ scene_load_buffer_as(struct scene *sc, const char *file, const char *text,
 	    ld->set, ld->nset, object) == 0) {
 		L.record = ld != NULL && ld->record;
 		L.listing = ld != NULL && ld->listing;
+		L.overridden = ld != NULL && ld->nset > 0;
 		rc = load_root(&L, config_root_setting(&cfg));
 		if (rc == 0 && L.record) {
 			sc->text = xmalloc(len + 1);

@@ -115,8 +115,9 @@ void	 scene_free(struct scene *);
 /*
  * Whether row k of tab (the top level's or the model's) applies to the
  * scene as loaded; if not, why, into why[sz] ("to model \"inhibition\",
- * whose angle emerges").  Such a setting given is an error, and
- * --settings does not offer it.
+ * whose angle emerges").  Such a setting given is an error (or, made
+ * so by a --set, ignored: scene_tables.c), and --settings lists it as
+ * not applying.
  */
 int	 scene_applies(const struct scene *, const struct table *tab,
 	    size_t k, char *why, size_t sz);

@@ -230,33 +230,80 @@ scene_applies(const struct scene *sc, const struct table *tab, size_t k,
 }
 
 /*
+ * Whether the file loads as it is, without the --set given with it:
+ * then each setting it gives applies there, and one left unused now
+ * was made so by a --set.  Tried with the messages hushed.
+ */
+static int
+file_alone_loads(const struct load *L)
+{
+	struct scene alone;
+	int ok;
+
+	diag_hush(1);
+	ok = scene_load_buffer_as(&alone, L->file, L->text, L->len,
+	    L->object, NULL) == 0;
+	scene_free(&alone);
+	diag_hush(0);
+	return ok;
+}
+
+/*
  * A setting given that the scene's other settings leave unused, an
  * error as a setting of another model is ("'inhibition.exponent' does
  * not apply with inhibition.kernel \"gaussian\", ..."): ignored, it
- * would pass for obeyed.
+ * would pass for obeyed.  But where the file gives it, and the file
+ * alone loads (so a --set made it unused), it is ignored with a
+ * warning: --set switches the kernel of a file that gives an exponent
+ * without the file being edited (the Blender panel's menus do so).
+ * Not where the scene is kept as written (--cfg): the file it wrote
+ * would not load.  0, 1 to drop it, or -1 after the error.
  */
+static int
+unused_given(const struct load *L, int line, const char *what,
+    const char *why)
+{
+	if (line >= DIAG_LINE_SET || !L->overridden || !file_alone_loads(L)) {
+		diag(ST_SCENE, L->file, line, 0, "'%s' does not apply %s", what,
+		    why);
+		return -1;
+	}
+	if (L->record) {
+		diag(ST_SCENE, L->file, line, 0, "'%s' does not apply %s, as "
+		    "--set makes it, and the file written would not load: "
+		    "take it out of the file first", what, why);
+		return -1;
+	}
+	/* Once, not again for each frame. */
+	if (L->sc->frame_no <= 1)
+		diag(ST_OK, L->file, line, 0, "'%s' does not apply %s, as "
+		    "--set made it: ignored", what, why);
+	return 1;
+}
+
 int
 load_check_applies(struct load *L)
 {
-	const struct scene *sc = L->sc;
+	struct scene *sc = L->sc;
 	const struct model *m = sc->model;
-	const int *given = (const int *)((const char *)sc->params +
-	    m->settings->given);
-	char why[160];
+	int *given = (int *)((char *)sc->params + m->settings->given);
+	char why[160], what[PATH_LEN * 2];
 
 	if (sc->given[S_DIVERGENCE] && !scene_applies(sc, &scene_table,
 	    S_DIVERGENCE, why, sizeof(why))) {
-		diag(ST_SCENE, L->file, sc->given[S_DIVERGENCE], 0,
-		    "'divergence' does not apply %s", why);
-		return -1;
+		if (unused_given(L, sc->given[S_DIVERGENCE], "divergence",
+		    why) < 0)
+			return -1;
+		sc->given[S_DIVERGENCE] = 0;
 	}
 	for (size_t k = 0; k < m->settings->n; k++)
 		if (given[k] && !scene_applies(sc, m->settings, k, why,
 		    sizeof(why))) {
-			diag(ST_SCENE, L->file, given[k], 0, "'%s.%s' does "
-			    "not apply %s", m->name, m->settings->rows[k].name,
-			    why);
-			return -1;
+			snprintf(what, sizeof(what), "%s.%s", m->name,
+			    m->settings->rows[k].name);
+			if (unused_given(L, given[k], what, why) < 0)
+				return -1;
+			given[k] = 0;
 		}
 	return 0;
 }

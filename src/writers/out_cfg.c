@@ -40,7 +40,7 @@ cfg_write(struct sink *s, const struct compound *c,
     const struct override *set, int nset)
 {
 	const struct scene *sc = &c->parts[c->n - 1]->sc;
-	struct loading ld = { NULL, NULL, 0, 1, 0 };
+	struct loading ld = { .record = 1 };
 	struct scene again;
 	size_t len = sc->len;
 	char *text = xmalloc(len + 1);

@@ -84,7 +84,7 @@ int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	struct frame fr = { 2, 3 };
-	struct loading ld = { &fr, NULL, 0, 1, 0 };
+	struct loading ld = { .frame = &fr, .record = 1 };
 	struct compound c;
 	struct result merged;
 	const struct result *all[2];

@@ -36,7 +36,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	json_string(&s, arg);
 	for (int listing = 0, ok = override_parse(arg, &o) == 0; ok &&
 	    listing < 2; listing++) {
-		struct loading ld = { NULL, &o, 1, 1, listing };
+		struct loading ld = { .set = &o, .nset = 1, .record = 1,
+		    .listing = listing };
 		struct scene sc;
 		const char *text = nl != NULL ? (const char *)nl + 1 : "";
 		size_t len = nl != NULL ? size - alen - 1 : 0;
