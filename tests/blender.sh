@@ -84,6 +84,8 @@ printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "gaussian"; 
 px --csv -o "$OUT/inh.csv" "$OUT/inh.cfg"
 px --csv --set 'inhibition.kernel="power"' -o "$OUT/inh-power.csv" "$OUT/inh.cfg"
 px --csv --set 'inhibition.kernel="power"' --set inhibition.exponent=2 -o "$OUT/inh-exp2.csv" "$OUT/inh.cfg"
+# The power law's with its exponent in the file: the Gaussian from the menu.
+printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "power"; exponent = 3; growth = 0.1; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/inh-file-exp.cfg"
 ADDON_ZIP=$TESTBIN/phyllo_import.zip
 # Statically linked: it runs inside the roots, whose libconfig differs.
 ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
@@ -218,7 +220,7 @@ for b in $BLENDERS; do
 		cp "$OUT/panel.cfg" "$D/panel.cfg"
 		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value, save to the scene file, frames" \
 			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
-		checked panel 27
+		checked panel 29
 		end
 	else
 		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"

@@ -276,6 +276,30 @@ def fill(st, settings):
         _filling = False
 
 
+def field_of(item):
+    """The property that holds a setting's value in the panel."""
+    return {"NUMBER": "number", "INTEGER": "integer",
+            "CHOICE": "choice"}.get(item.kind, "text")
+
+
+def kept_changes(st):
+    """The changes of settings that do not apply now, kept for when they
+    do: what a refill from the file would lose."""
+    return {s.path: getattr(s, field_of(s)) for s in st.settings
+            if not s.applies and s.changed()}
+
+
+def put_back(st, kept):
+    global _filling
+    _filling = True
+    try:
+        for s in st.settings:
+            if s.path in kept:
+                setattr(s, field_of(s), kept[s.path])
+    finally:
+        _filling = False
+
+
 def structure_of(name):
     """The collection the script built for scene name."""
     return next((c for c in bpy.data.collections
@@ -442,6 +466,7 @@ class PHYLLO_OT_save(OnStructure, bpy.types.Operator):
         st = top.phyllo
         path = bpy.path.abspath(st.scene)
         overrides = st.overrides()
+        kept = kept_changes(st)
         try:
             text = run_program(context, ["--cfg"] + sum(
                 (["--set", o] for o in overrides), []) + [path])
@@ -455,6 +480,7 @@ class PHYLLO_OT_save(OnStructure, bpy.types.Operator):
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
         fill(st, settings["settings"])
+        put_back(st, kept)
         self.report({"INFO"}, "Wrote %d setting(s) into %s"
                     % (len(overrides), os.path.basename(path)))
         return {"FINISHED"}
@@ -519,9 +545,7 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
             split.enabled = item.applies
             split.label(text=item.path.split(".")[-1] +
                         (" *" if item.changed() else ""))
-            field = {"NUMBER": "number", "INTEGER": "integer",
-                     "CHOICE": "choice"}.get(item.kind, "text")
-            split.prop(item, field, text="")
+            split.prop(item, field_of(item), text="")
             if not item.applies:
                 for line in wrap(item.why, 44):
                     box.label(text=line)

@@ -13,7 +13,8 @@
 # a collision scene on a hemisphere (DIR/coll.csv), DIR/cone.csv with
 # --set collision.receptacle.shape="cone"; DIR/inh.cfg an inhibition
 # scene with the Gaussian kernel (DIR/inh.csv), DIR/inh-power.csv with
-# the power law's, DIR/inh-exp2.csv with its exponent 2 too.
+# the power law's, DIR/inh-exp2.csv with its exponent 2 too;
+# DIR/inh-file-exp.cfg the power law's with its exponent in the file.
 # Prints "check: ..." lines like check.py.
 import csv
 import os
@@ -201,6 +202,22 @@ check(not st.error and not exponent.applies and
       st.overrides(every=True) == ["inhibition.exponent=2"],
       "back to the Gaussian: the changed exponent kept but not sent, "
       "no error (%r), the file's structure again" % st.error)
+bpy.ops.phyllo.save()
+st = bpy.context.scene.phyllo_structure.phyllo
+check(not setting("inhibition.exponent").applies and
+      setting("inhibition.exponent").number == 2 and
+      st.overrides(every=True) == ["inhibition.exponent=2"],
+      "Save keeps the change of a setting that does not apply (%s)"
+      % st.overrides(every=True))
+# The exponent in the file itself: the kernel's menu must still work.
+bpy.ops.import_scene.phyllotaxis(
+    filepath=os.path.join(folder, "inh-file-exp.cfg"))
+st = bpy.context.scene.phyllo_structure.phyllo
+setting("inhibition.kernel").choice = "gaussian"
+check(not st.error and not setting("inhibition.exponent").applies and
+      same(positions(), from_csv("inh.csv")),
+      "a scene whose file gives the exponent, switched to the Gaussian: "
+      "built, the file's exponent ignored (%r)" % st.error)
 
 bpy.ops.import_scene.phyllotaxis(filepath=scene, frames=5)
 sc = bpy.context.scene
