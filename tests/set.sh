@@ -201,6 +201,17 @@ try "--cfg refuses the file's unused one: the file written would not load" \
 assert "exit 1, says to take it out" '[ $rc -eq 1 ] && grep -qF "inh-exp.cfg:3: '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent, as --set makes it, and the file written would not load: take it out of the file first" $OUT/stderr'
 assert "nothing written" '[ ! -s $OUT/stdout ]'
 end
+# A part's setting that does not apply: listed as the main scene's are.
+printf 'model = "inhibition";\ncount = 20;\ninhibition = { kernel = "gaussian"; growth = 0.1; };\n' >"$OUT/part-gauss.cfg"
+printf 'model = "planar";\ncount = 3;\norgans = ( { object = "Head"; scene = "part-gauss.cfg"; } );\n' >"$OUT/main-parts.cfg"
+try "--settings lists a part's setting that does not apply, given by --set" \
+	px --settings --set Head:inhibition.exponent=2 "$OUT/main-parts.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "Head:inhibition.exponent from --set, applies false" 'grep "\"path\": \"Head:inhibition.exponent\"" $OUT/stdout | grep -q "\"from\": \"set\".*\"applies\": false"'
+end
+try "and --info refuses it" px --info --set Head:inhibition.exponent=2 "$OUT/main-parts.cfg"
+assert "exit 1, the loader's message" '[ $rc -eq 1 ] && grep -qF "phyllo-export: --set Head:inhibition.exponent=2: '"'"'inhibition.exponent'"'"' does not apply with inhibition.kernel \"gaussian\", which has no exponent" $OUT/stderr'
+end
 try "--cfg refuses them as the loader does" px --cfg --set divergence=100 scenes/sunflower-emerged.cfg
 assert "exit 1, the message" '[ $rc -eq 1 ] && grep -qx "phyllo-export: --set divergence=100: '"'"'divergence'"'"' does not apply to model \"inhibition\", whose angle emerges" $OUT/stderr'
 assert "nothing written" '[ ! -s $OUT/stdout ]'
