@@ -6,7 +6,8 @@
  * names part.cfg) and deep.cfg (which names nested.cfg), and is loaded
  * as frame 2 of 3, so f and F are live.  Each writer's size estimate is
  * made too, and the Blender script is written in the pieces --frames
- * writes it in, its parts opened as views.
+ * writes it in, its parts opened as views; and first listed as
+ * --settings loads and lists it.
  * Scenes that ask for more than 20,000 organs, or leave the count to the
  * model, are loaded and checked but not run, to keep each input fast;
  * the limits themselves have their own tests.
@@ -85,6 +86,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	struct frame fr = { 2, 3 };
 	struct loading ld = { .frame = &fr, .record = 1 };
+	struct loading listing = { .record = 1, .listing = 1 };
 	struct compound c;
 	struct result merged;
 	const struct result *all[2];
@@ -96,6 +98,13 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if ((fp = fopen(path, "wb")) == NULL ||
 	    fwrite(data, 1, size, fp) != size || fclose(fp) != 0)
 		abort();
+	/* As --settings loads and lists it: settings left unused kept. */
+	if (compound_load(&c, path, &listing, NULL) == 0) {
+		sink_init(&s, NULL);
+		settings_write(&s, &c, NULL, 0);
+		sink_free(&s);
+	}
+	compound_free(&c);
 	if (compound_load(&c, path, &ld, pov_check) != 0 || !small(&c) ||
 	    compound_run(&c, &fr, NULL) != 0)
 		goto out;
