@@ -83,6 +83,9 @@ struct except {
  */
 void	cover_init(struct cover *, const struct curve *, double r_min,
 	    double s_band, double cells_most);
+/* How many rows cover_init() would cut the band into. */
+double	cover_rows(const struct curve *, double r_min, double s_band,
+	    double cells_most);
 void	cover_free(struct cover *);
 
 /*
