@@ -41,6 +41,12 @@
 #define FALLS		0.8	/* a radius law falls below this of the
 				   first radius: */
 #define TALL_ROWS	1024	/* and the map is this tall: more cells */
+#define RISES		1.25	/* a radius law rises to this of the first:
+				   wider cells up the band, */
+#define EST_SAMPLES	256	/* in parts of it */
+#define EST_LOOSE	1.25	/* primordia take at most this times the
+				   area of a hexagonal packing (assumed:
+				   only the cells' width hangs on it) */
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
 				   walk's steps vanish in double precision */
 
@@ -243,6 +249,45 @@ law_extent(struct coll *C, long long N, double r0, double *rmin,
 	}
 }
 
+/*
+ * For a radius law that only rises (as sampled), by RISES or more: the
+ * least radius of the walks expected to reach each of EST_SAMPLES
+ * parts of the band's length L, else NULL.  The front reaches arc
+ * length s when the primordia before it cover the area below s;
+ * packed no looser than EST_LOOSE times hexagonally, those are at
+ * least the first m whose hexagonal area times EST_LOOSE reaches it,
+ * and the radius there is at least law(m).  Only how wide the cover
+ * map's cells are hangs on this, never where a primordium goes.
+ */
+static double *
+rising_est(const struct coll *C, double L)
+{
+	double *r_est, area = 0;
+	size_t m = 0;
+
+	if (C->law == NULL || !(C->law[C->nlaw - 1] >= RISES * C->law[0]))
+		return NULL;
+	for (size_t i = 0; i < C->nlaw; i++)
+		if (!(C->law[i] < HUGE_VAL) || (i > 0 && C->law[i] <
+		    C->law[i - 1]))
+			return NULL;
+	r_est = xcalloc(EST_SAMPLES, sizeof(*r_est));
+	for (int i = 0; i < EST_SAMPLES; i++) {
+		/* The area below the part's start. */
+		double below = curve_area(&C->cv, curve_t(&C->cv, L * i /
+		    EST_SAMPLES));
+
+		while (m + 1 < C->nlaw && EST_LOOSE * (area + 2 * sqrt(3) *
+		    C->law[m] * C->law[m] * (double)C->law_step) <= below) {
+			area += 2 * sqrt(3) * C->law[m] * C->law[m] *
+			    (double)C->law_step;
+			m++;
+		}
+		r_est[i] = C->law[m];
+	}
+	return r_est;
+}
+
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
 static int
 place(const struct model_ctx *ctx, struct result *res, int how,
@@ -294,6 +339,7 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		 * packing, and some rows more.
 		 */
 		double s = C.cv.length, most = (double)N * CELLS_PER_ORGAN;
+		double *r_est;
 
 		if (2 * band < C.cv.area)
 			s = curve_s(&C.cv, curve_t_area(&C.cv, 2 * band, NULL,
@@ -328,7 +374,9 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		if (P->epsilon.e == NULL && C.law != NULL && rmin < FALLS * r &&
 		    cover_rows(&C.cv, rmin, s, most) >= TALL_ROWS)
 			most *= 2;
-		cover_init(&C.cover, &C.cv, rmin, s, most);
+		r_est = rising_est(&C, fmin(s, C.cv.length));
+		cover_init(&C.cover, &C.cv, rmin, s, most, r_est, EST_SAMPLES);
+		free(r_est);
 	}
 	/*
 	 * Room for as many as circles of radius r would pack hexagonally,

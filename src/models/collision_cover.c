@@ -202,7 +202,7 @@ cover_rows(const struct curve *c, double r_min, double s_band,
 
 void
 cover_init(struct cover *cv, const struct curve *c, double r_min,
-    double s_band, double cells_most)
+    double s_band, double cells_most, const double *r_est, int n_est)
 {
 	double L, W, a;
 	size_t n = 0;
@@ -249,7 +249,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->bbase = xcalloc((size_t)blocks, sizeof(*cv->bbase));
 	cv->bstride = xcalloc((size_t)blocks, sizeof(*cv->bstride));
 	for (int32_t b = 0; b < blocks; b++) {
-		double rho = 0;
+		double rho = 0, wide = a / 2;
 		int z = 0;
 
 		/*
@@ -259,7 +259,25 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		 */
 		for (int32_t k = 8 * b; k < 8 * b + 8 && k < cv->rows; k++)
 			rho = fmax(rho, cv->rho_c[k] + cv->h[k]);
-		while (z < zcap && (cv->cols >> (z + 1)) * a >= 4 * M_PI * rho)
+		/*
+		 * Or as wide as cells sized for the least radius expected
+		 * to walk there, if that is wider: a rising radius walks
+		 * high up only when it has grown, and cells of r_min a side
+		 * there had cover_add() write (2 r / a)^2 of them for each
+		 * primordium.
+		 */
+		if (r_est != NULL) {
+			int i0 = (int)(8 * b * a / L * n_est), i1 = (int)(fmin(
+			    (8 * b + 8) * a, L) / L * n_est);
+			double least = HUGE_VAL;
+
+			for (int i = i0 < 0 ? 0 : i0; i <= i1 && i < n_est; i++)
+				least = fmin(least, r_est[i]);
+			if (least < HUGE_VAL)
+				wide = fmax(wide, CELL_FRAC * least);
+		}
+		while (z < zcap && (cv->cols >> (z + 1)) * wide >= 2 * M_PI *
+		    rho)
 			z++;
 		cv->bz[b] = (uint8_t)z;
 		zmax = z > zmax ? z : zmax;
