@@ -6,8 +6,7 @@
  * (collision_cover.c) proves covered, and proving more of it (refine).
  *
  * Tried for the falling radius's looks far below the front, and not
- * kept (the sphere, 100,000, radius falling 5x; the code is in the
- * history of issue 39's work):
+ * kept (the sphere's band of 100,000, radius falling 5x):
  *
  * A proof at each look above the column's head that left the cell
  * blocked, closer than refine()'s: every primordium that can reach the
@@ -19,8 +18,8 @@
  * at 0.65 r to r.  But looks fell only from 6.6 to 5.1 a walk, for 70%
  * more instructions and 38% more time: late in the run the radius
  * falls 12% to 25% between one walk up a column and the next, past
- * most bounds proved, and most looks are at cells that no walk had
- * looked at before (their bounds covered the last walk's radius).
+ * most bounds proved, and about half the looks are a cell's first
+ * (its bound covered the column's last walk).
  * Proofs aimed at the radius of the column's next walk proved 1.42 a
  * walk, and the looks stayed 5.1.
  *
