@@ -151,17 +151,16 @@ row_kappa(struct cover *cv, const struct curve *c)
 	}
 }
 
-void
-cover_init(struct cover *cv, const struct curve *c, double r_min,
-    double s_band, double cells_most)
+/*
+ * The map's cells' side, and the band's length *L and widest ring's
+ * circumference *W (cover_init()).
+ */
+static double
+cover_side(const struct curve *c, double r_min, double s_band,
+    double cells_most, double *L, double *W)
 {
-	double L = fmin(c->length, s_band), a = CELL_FRAC * r_min;
-	double W = 0, cells, most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX);
-	size_t n = 0;
-	int32_t blocks;
-	int zcap, zmax = 0;
-
-	memset(cv, 0, sizeof(*cv));
+	double a = CELL_FRAC * r_min, cells;
+	double most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX);
 
 	/*
 	 * Only the band the primordia can reach is mapped: a small count
@@ -169,25 +168,50 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	 * whole receptacle at their size would not fit.  Its columns are
 	 * as wide as the band's widest ring needs.
 	 */
-	cv->band = L < c->length;
+	*L = fmin(c->length, s_band);
+	*W = 0;
 	for (int i = 0; i <= 64; i++) {
 		double p[2];
 
-		curve_eval(c, curve_t(c, L * i / 64), p, NULL);
-		W = fmax(W, p[0]);
+		curve_eval(c, curve_t(c, *L * i / 64), p, NULL);
+		*W = fmax(*W, p[0]);
 	}
-	W = 2 * M_PI * fmin(W + L / 64, c->rho_max);
+	*W = 2 * M_PI * fmin(*W + *L / 64, c->rho_max);
 	/*
 	 * Fewer, larger cells if there would be too many: coarser skips.
 	 * A receptacle narrower than a cell has one column, and then
 	 * only the rows count.
 	 */
-	cells = ceil(L / a) * fmax(1, ceil(W / a));
+	cells = ceil(*L / a) * fmax(1, ceil(*W / a));
 	if (cells > most) {
-		a = sqrt(L * W / most) * 1.01;
-		if (!(W > a))
-			a = L / most * 1.01;
+		a = sqrt(*L * *W / most) * 1.01;
+		if (!(*W > a))
+			a = *L / most * 1.01;
 	}
+	return a;
+}
+
+double
+cover_rows(const struct curve *c, double r_min, double s_band,
+    double cells_most)
+{
+	double L, W, a = cover_side(c, r_min, s_band, cells_most, &L, &W);
+
+	return fmax(1, ceil(L / a));
+}
+
+void
+cover_init(struct cover *cv, const struct curve *c, double r_min,
+    double s_band, double cells_most, const double *r_est, int n_est)
+{
+	double L, W, a;
+	size_t n = 0;
+	int32_t blocks;
+	int zcap, zmax = 0;
+
+	memset(cv, 0, sizeof(*cv));
+	a = cover_side(c, r_min, s_band, cells_most, &L, &W);
+	cv->band = L < c->length;
 	cv->a = a;
 	cv->tight = TIGHT * r_min;
 	cv->rows = (int32_t)fmax(1, ceil(L / a));
@@ -225,7 +249,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->bbase = xcalloc((size_t)blocks, sizeof(*cv->bbase));
 	cv->bstride = xcalloc((size_t)blocks, sizeof(*cv->bstride));
 	for (int32_t b = 0; b < blocks; b++) {
-		double rho = 0;
+		double rho = 0, wide = a / 2;
 		int z = 0;
 
 		/*
@@ -235,7 +259,25 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		 */
 		for (int32_t k = 8 * b; k < 8 * b + 8 && k < cv->rows; k++)
 			rho = fmax(rho, cv->rho_c[k] + cv->h[k]);
-		while (z < zcap && (cv->cols >> (z + 1)) * a >= 4 * M_PI * rho)
+		/*
+		 * Or as wide as cells sized for the least radius expected
+		 * to walk there, if that is wider: a rising radius walks
+		 * high up only when it has grown, and cells of r_min a side
+		 * there had cover_add() write (2 r / a)^2 of them for each
+		 * primordium.
+		 */
+		if (r_est != NULL) {
+			int i0 = (int)(8 * b * a / L * n_est), i1 = (int)(fmin(
+			    (8 * b + 8) * a, L) / L * n_est);
+			double least = HUGE_VAL;
+
+			for (int i = i0 < 0 ? 0 : i0; i <= i1 && i < n_est; i++)
+				least = fmin(least, r_est[i]);
+			if (least < HUGE_VAL)
+				wide = fmax(wide, CELL_FRAC * least);
+		}
+		while (z < zcap && (cv->cols >> (z + 1)) * wide >= 2 * M_PI *
+		    rho)
 			z++;
 		cv->bz[b] = (uint8_t)z;
 		zmax = z > zmax ? z : zmax;

@@ -79,10 +79,17 @@ struct except {
 /*
  * Map the band from the base up to arc length s_band (the whole curve
  * if it is longer) in cells sized for primordia of radius r_min, at
- * most cells_most of them (fewer, coarser cells past that).
+ * most cells_most of them (fewer, coarser cells past that).  With
+ * r_est, no walk of a radius under r_est[i] is expected to look at arc
+ * lengths i / n_est to (i + 1) / n_est of the band (a radius that only
+ * rises), and cells there may be as wide as that radius wants.
  */
 void	cover_init(struct cover *, const struct curve *, double r_min,
-	    double s_band, double cells_most);
+	    double s_band, double cells_most, const double *r_est,
+	    int n_est);
+/* How many rows cover_init() would cut the band into. */
+double	cover_rows(const struct curve *, double r_min, double s_band,
+	    double cells_most);
 void	cover_free(struct cover *);
 
 /*
