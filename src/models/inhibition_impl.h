@@ -89,8 +89,8 @@ struct field {
 	int		 gexp;		/* exponentials of its weights, or 0 */
 	double		*gdec, *gin;	/* per one: its decay a step, and the
 					   weight it takes a primordium in */
-	double		*gsum;		/* per mode, cos then sin, and
-					   exponential: its running sum */
+	double		*gsum;		/* per exponential, and mode's cos
+					   then sin: its running sum */
 	double		 far_curv;	/* the far field's E'', at most */
 	double		 tail[2];	/* the most its modes past BOUND_MODES
 					   add to E and to E' */
