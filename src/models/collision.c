@@ -372,8 +372,10 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		 * than they spared, on the sphere too.
 		 */
 		if (P->epsilon.e == NULL && C.law != NULL && rmin < FALLS * r &&
-		    cover_rows(&C.cv, rmin, s, most) >= TALL_ROWS)
+		    cover_rows(&C.cv, rmin, s, most) >= TALL_ROWS) {
 			most *= 2;
+			C.finer = 1;
+		}
 		r_est = rising_est(&C, fmin(s, C.cv.length));
 		cover_init(&C.cover, &C.cv, rmin, s, most, r_est, EST_SAMPLES);
 		free(r_est);
@@ -452,6 +454,7 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		    (double)C.starts);
 		result_info(res, "cover misses", 1, (double)cover_check(&C.cover,
 		    &C.cv, C.rmax, CHECK_EVERY, coll_near_point, &C));
+		result_info(res, "cover doubled", 1, (double)C.finer);
 	}
 	rc = 0;
 out:

@@ -44,6 +44,8 @@ struct coll {
 	struct cover	 cover;
 	int		 nocover;	/* walk without the cover map */
 	int		 check;		/* test what refine() proves */
+	int		 finer;		/* the map's cells doubled (a falling
+					   radius up a tall band) */
 	long long	 refined, refine_misses;
 	long long	 starts, start_misses;	/* check: start_row()'s */
 	double		*law;		/* the radius law sampled, or NULL */

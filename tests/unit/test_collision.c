@@ -262,6 +262,13 @@ static const struct {
 	{ "disk, a band, radius rising 3x", "collision = { receptacle = { "
 	  "shape = \"disk\"; }; radius = \"0.002 * (0.5 + t)\"; }; "
 	  "count = 8000;" },
+	/*
+	 * A narrow cylinder, a radius falling 10x: a map of over 1,024
+	 * rows, whose cells are doubled (collision.c).
+	 */
+	{ "cylinder, radius falling 10x, a tall band", "collision = { "
+	  "receptacle = { shape = \"cylinder\"; radius = 0.05; height = 4; "
+	  "}; radius = \"0.01 * (1 - 0.9 * t)\"; }; count = 6000;" },
 };
 
 static void
@@ -296,6 +303,10 @@ cover_agrees(void)
 		check(info(&a, "cover misses", 0) == 0, "%s: every cell's "
 		    "bound holds at 3 x 3 points of it (%g points beyond)",
 		    large[i].what, info(&a, "cover misses", 0));
+		/* The doubled cells, where the case is there for them. */
+		if (strstr(large[i].what, "tall band") != NULL)
+			check(info(&a, "cover doubled", 0) == 1, "%s: the "
+			    "map's cells doubled", large[i].what);
 		/*
 		 * And what refine() proved, closely: 9 x 9 points of every
 		 * cell it lowered (the check above samples every 31st cell
