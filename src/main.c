@@ -175,25 +175,31 @@ size_arg(const char *arg, double *bytes)
 static void
 bad_option(const char *arg, int opt, const struct option *longopts)
 {
-	const char *words[64], *near = NULL, *name = arg + 2;
+	const char *words[64], *near = NULL, *name;
 	char list[256] = "";
-	size_t n = 0, len = strcspn(name, "="), matches = 0;
+	size_t n = 0, len, matches = 0;
+	int is_long = strncmp(arg, "--", 2) == 0;
 
+	/* arg may be any word, argv[0] even: its name only if it is long. */
+	name = is_long ? arg + 2 : "";
+	len = strcspn(name, "=");
 	if (opt != 0) {
 		/*
 		 * arg is the word getopt_long() is past: a long option's
 		 * with "=" (--csv=x), or the word before a short one's
 		 * cluster (-qx): which, only the option's value says.
 		 */
-		for (n = 0; longopts[n].name != NULL; n++)
+		const char *takes_none = NULL;
+
+		for (n = 0; len > 0 && name[len] == '=' && takes_none == NULL &&
+		    longopts[n].name != NULL; n++)
 			if (longopts[n].val == opt && longopts[n].has_arg ==
-			    no_argument && strncmp(arg, "--", 2) == 0 &&
-			    name[len] == '=' && len > 0 &&
-			    strncmp(longopts[n].name, name, len) == 0)
-				break;
-		if (longopts[n].name != NULL)
+			    no_argument && strncmp(longopts[n].name, name,
+			    len) == 0)
+				takes_none = longopts[n].name;
+		if (takes_none != NULL)
 			diag(ST_USAGE, NULL, 0, 0, "option --%s takes no "
-			    "argument", longopts[n].name);
+			    "argument", takes_none);
 		else
 			diag(ST_USAGE, NULL, 0, 0, "unknown option -%c", opt);
 		usage(stderr);

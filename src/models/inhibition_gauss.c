@@ -122,7 +122,8 @@ inhib_gauss_step(struct field *F)
 		 * pass, an exponential's ROW sums at a time: each c[v] adds
 		 * them in the same order as a sum over j alone would, but
 		 * the ROW sums are apart, not one chain of additions each
-		 * waiting on the last (three times as fast).
+		 * waiting on the last (20,000 at G = 0.02: the whole run
+		 * 0.33 -> 0.25 s, best of 5).
 		 */
 		if (n > GAUSS_NEAR) {
 			const double *t = inhib_gauss_row(F, n - GAUSS_NEAR - 1);
