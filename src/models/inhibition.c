@@ -102,6 +102,23 @@ static const struct table inhibition_table = TABLE(inhibition_rows,
 #define AGE_MAX		700	/* e^700: the largest radius a double holds */
 #define GROWTH_MIN	0.0005	/* the slowest growth searched surely */
 
+/* Room for n entries in v, one block. */
+void
+inhib_cutv_alloc(struct cutv *v, size_t n)
+{
+	v->c = xcalloc(5 * (n > 0 ? n : 1), sizeof(*v->c));
+	v->s = v->c + n;
+	v->q0 = v->s + n;
+	v->r2 = v->q0 + n;
+	v->fl = v->r2 + n;
+}
+
+void
+inhib_cutv_free(struct cutv *v)
+{
+	free(v->c);
+}
+
 static void
 field_add(struct field *F, double th)
 {
@@ -525,10 +542,10 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	/* Room for the most gaps any step looks at (near_count()). */
 	cuts = xcalloc(near_count(gmin) + 1, sizeof(*cuts));
 	gaps = xcalloc(near_count(gmin) + 1, sizeof(*gaps));
-	F.cp = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cp));
+	inhib_cutv_alloc(&F.cp, 2 * near_count(gmin) + 2);
 	F.cpi = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cpi));
 	F.gpos = xcalloc(near_count(gmin) + 1, sizeof(*F.gpos));
-	F.mid = xcalloc(N, sizeof(*F.mid));
+	inhib_cutv_alloc(&F.mid, N);
 	/*
 	 * The far field, but for the power law's reference sum of all
 	 * pairs; the Gaussian's is all of it.
@@ -643,10 +660,10 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	inhib_gauss_free(&F);
 	free(cuts);
 	free(gaps);
-	free(F.cp);
+	inhib_cutv_free(&F.cp);
 	free(F.cpi);
 	free(F.gpos);
-	free(F.mid);
+	inhib_cutv_free(&F.mid);
 	free(F.w);
 	free(F.Mc);
 	free(F.Ms);

@@ -20,7 +20,7 @@ struct part {
 static inline double
 least_cos(double c, double s, const struct part *p)
 {
-	int opp = c * p->sl - s * p->cl >= 0 && s * p->ch - c * p->sh >= 0;
+	int opp = (c * p->sl - s * p->cl >= 0) & (s * p->ch - c * p->sh >= 0);
 	double a = p->cl * c + p->sl * s, b = p->ch * c + p->sh * s;
 
 	return opp ? -1 : a < b ? a : b;
@@ -49,11 +49,89 @@ least_pull(const struct field *F, size_t i, const struct part *p)
 	return pull_at(F, R0 * R0 + r * r - 2 * R0 * r * cd);
 }
 
-/* The same as above_floor(), for cut u in a part narrower than pi. */
+/*
+ * Sums over near primordia: most bounds take 3 to 16, summed inline,
+ * two at a time for s = 3 (1/x + 1/y = (x + y) / xy, one division);
+ * runs of LONG or more (the last tier's, the near ones that are not
+ * cuts) LANES at a time in functions built for AVX2 too (HOT), where
+ * a call costs less than the lanes save.
+ */
+#define LONG		4
+
+/* The lanes' partial sums added up, always in this order. */
 static inline double
-cut_above(const struct field *F, const struct cutp *u, const struct part *p)
+lanes_sum(const double acc[LANES])
 {
-	return pull_at(F, u->q0 - u->r2 * least_cos(u->c, u->s, p)) - u->fl;
+	double sum = 0;
+
+	for (int l = 0; l < LANES; l++)
+		sum += acc[l];
+	return sum;
+}
+
+/* Entries from to to - 1 of v above their floors at (cx, sx); s = 3. */
+static HOT double
+side_lanes(const struct cutv *v, size_t from, size_t to, double cx,
+    double sx)
+{
+	double acc[LANES] = { 0 }, sum = 0;
+	size_t d = from;
+
+	for (; d + LANES <= to; d += LANES)
+		for (int l = 0; l < LANES; l++) {
+			double q = v->q0[d + l] - v->r2[d + l] * (v->c[d + l] *
+			    cx + v->s[d + l] * sx);
+
+			acc[l] += 1 / (q * sqrt(q)) - v->fl[d + l];
+		}
+	for (; d < to; d++) {
+		double q = v->q0[d] - v->r2[d] * (v->c[d] * cx + v->s[d] * sx);
+
+		sum += 1 / (q * sqrt(q)) - v->fl[d];
+	}
+	return sum + lanes_sum(acc);
+}
+
+/* The same, each where it pulls least in part p; s = 3. */
+static HOT double
+cuts_lanes(const struct cutv *v, size_t from, size_t to,
+    const struct part *p)
+{
+	double acc[LANES] = { 0 }, sum = 0;
+	size_t d = from;
+
+	for (; d + LANES <= to; d += LANES)
+		for (int l = 0; l < LANES; l++) {
+			double q = v->q0[d + l] - v->r2[d + l] *
+			    least_cos(v->c[d + l], v->s[d + l], p);
+
+			acc[l] += 1 / (q * sqrt(q)) - v->fl[d + l];
+		}
+	for (; d < to; d++) {
+		double q = v->q0[d] - v->r2[d] * least_cos(v->c[d], v->s[d],
+		    p);
+
+		sum += 1 / (q * sqrt(q)) - v->fl[d];
+	}
+	return sum + lanes_sum(acc);
+}
+
+/*
+ * The same as above_floor() summed over entries from to to - 1 of v,
+ * in a part narrower than pi.
+ */
+static inline double
+cuts_above(const struct field *F, const struct cutv *v, size_t from,
+    size_t to, const struct part *p)
+{
+	double sum = 0;
+
+	if (F->hs == 1.5 && from + LONG <= to)
+		return cuts_lanes(v, from, to, p);
+	for (size_t d = from; d < to; d++)
+		sum += pull_at(F, v->q0[d] - v->r2[d] * least_cos(v->c[d],
+		    v->s[d], p)) - v->fl[d];
+	return sum;
 }
 
 /*
@@ -67,21 +145,13 @@ static int
 straight_from(const struct field *F, size_t from, size_t to,
     const struct part *gap)
 {
-	const struct cutp *l, *r;
+	const struct cutv *v = &F->cp;
 
 	if (!(from < to && gap->hi - gap->lo < M_PI))
 		return 0;
-	l = &F->cp[from];
-	r = &F->cp[to - 1];
-	return gap->sh * l->c - gap->ch * l->s > 0 &&	/* sin(b - left) */
-	    r->s * gap->cl - r->c * gap->sl > 0;	/* sin(right - a) */
-}
-
-/* A near cut's squared distance to the edge point (cx, sx). */
-static inline double
-cut_q(const struct cutp *u, double cx, double sx)
-{
-	return u->q0 - u->r2 * (u->c * cx + u->s * sx);
+	return gap->sh * v->c[from] - gap->ch * v->s[from] > 0 &&
+	    /* sin(b - left) and sin(right - a) */
+	    v->s[to - 1] * gap->cl - v->c[to - 1] * gap->sl > 0;
 }
 
 /*
@@ -94,28 +164,31 @@ static inline double
 side_above(const struct field *F, size_t from, size_t to, double cx,
     double sx)
 {
+	const struct cutv *v = &F->cp;
 	double sum = 0;
+	size_t d = from;
 
-	if (F->hs == 1.5) {
-		size_t d = from;
+	if (F->hs != 1.5) {
+		for (; d < to; d++)
+			sum += pull_at(F, v->q0[d] - v->r2[d] * (v->c[d] * cx +
+			    v->s[d] * sx)) - v->fl[d];
+		return sum;
+	}
+	if (from + LONG <= to)
+		return side_lanes(v, from, to, cx, sx);
+	for (; d + 1 < to; d += 2) {
+		double q = v->q0[d] - v->r2[d] * (v->c[d] * cx + v->s[d] * sx);
+		double p = v->q0[d + 1] - v->r2[d + 1] * (v->c[d + 1] * cx +
+		    v->s[d + 1] * sx);
+		double x = q * sqrt(q), y = p * sqrt(p);
 
-		/* Two at once, 1/x + 1/y = (x + y) / xy: one division. */
-		for (; d + 1 < to; d += 2) {
-			const struct cutp *u = &F->cp[d], *v = u + 1;
-			double q = cut_q(u, cx, sx), p = cut_q(v, cx, sx);
-			double x = q * sqrt(q), y = p * sqrt(p);
+		sum += (x + y) / (x * y) - v->fl[d] - v->fl[d + 1];
+	}
+	if (d < to) {
+		double q = v->q0[d] - v->r2[d] * (v->c[d] * cx + v->s[d] * sx);
 
-			sum += (x + y) / (x * y) - u->fl - v->fl;
-		}
-		if (d < to) {
-			double q = cut_q(&F->cp[d], cx, sx);
-
-			sum += 1 / (q * sqrt(q)) - F->cp[d].fl;
-		}
-	} else
-		for (size_t d = from; d < to; d++)
-			sum += pull_at(F, cut_q(&F->cp[d], cx, sx)) -
-			    F->cp[d].fl;
+		sum += 1 / (q * sqrt(q)) - v->fl[d];
+	}
 	return sum;
 }
 
@@ -141,8 +214,7 @@ mid_above(const struct field *F, size_t k, const struct part *p)
 	double sum = 0;
 
 	if (p->hi - p->lo < M_PI)
-		for (size_t d = 0; d < F->nmid; d++)
-			sum += cut_above(F, &F->mid[d], p);
+		sum = cuts_above(F, &F->mid, 0, F->nmid, p);
 	else
 		for (size_t i = F->from; i + k < F->n; i++)
 			sum += above_floor(F, i, p);
@@ -216,10 +288,8 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			coarse = side_above(F, first, lo, whole.ch, whole.sh) +
 			    side_above(F, hi, first + nc, whole.cl, whole.sl);
 		else
-			for (size_t d = first; d < first + nc; d++)
-				if (d < lo || d >= hi)
-					coarse += cut_above(F, &F->cp[d],
-					    &whole);
+			coarse = cuts_above(F, &F->cp, first, lo, &whole) +
+			    cuts_above(F, &F->cp, hi, first + nc, &whole);
 		if (tiers[tier].cuts == 0)
 			coarse += mid_above(F, k, &whole);
 	}
@@ -269,8 +339,7 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 			sum += side_above(F, lo, after, pt.ch, pt.sh) +
 			    side_above(F, after, hi, pt.cl, pt.sl);
 		else if (pt.hi - pt.lo < M_PI)
-			for (size_t d = lo; d < hi; d++)
-				sum += cut_above(F, &F->cp[d], &pt);
+			sum += cuts_above(F, &F->cp, lo, hi, &pt);
 		else
 			for (size_t d = first; d < first + nc; d++)
 				sum += above_floor(F, F->cpi[d], &pt);

@@ -24,14 +24,39 @@
 #define BOUND_MODES	24
 
 /*
- * A cut's primordium as the bounds want it, if it is a near one (the far
- * field is bounded apart): in the cuts' order.
+ * Near primordia as the bounds want them, in order (the far field is
+ * bounded apart): an array per quantity, so that the loops over them
+ * take LANES at once, each lane summing its own share.
  */
-struct cutp {
-	double		 c, s;		/* cos and sin of its angle */
-	double		 q0, r2;	/* R0^2 + r^2 and 2 R0 r */
-	double		 fl;		/* its floor */
+struct cutv {
+	double		*c, *s;		/* cos and sin of its angle */
+	double		*q0, *r2;	/* R0^2 + r^2 and 2 R0 r */
+	double		*fl;		/* its floor */
 };
+
+/*
+ * The sums over near primordia: four partial sums side by side, which
+ * the compiler runs as one vector where the CPU has them (HOT).  Their
+ * order is fixed, so every build adds the same numbers the same way.
+ */
+#define LANES		4
+
+/*
+ * The functions that hold those sums are built twice, for AVX2 and for
+ * the baseline, and the CPU picks at load time (GCC's and Clang's
+ * target_clones, on x86-64 where the C library has ifunc): four lanes
+ * where AVX2 has them, two with SSE2 alone.  FMA is left out: a*b + c
+ * is rounded twice in both builds (-std=c11 contracts nothing), so both
+ * give the same bits (-DNO_CLONES builds the baseline alone, to compare).
+ */
+#if defined(__x86_64__) && defined(__GLIBC__) && defined(__has_attribute) && !defined(NO_CLONES)
+#if __has_attribute(target_clones)
+#define HOT	__attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef HOT
+#define HOT
+#endif
 
 /*
  * The primordia so far: angle, its cosine and sine; ages from n.
@@ -99,12 +124,12 @@ struct field {
 	long long	 misses;	/* bounds above their gap's least E */
 	double		 floor;		/* the near ones' least pulls, */
 	double		*fl;		/* each, indexed as r */
-	struct cutp	*cp;		/* the near cuts in order, twice round */
+	struct cutv	 cp;		/* the near cuts in order, twice round */
 	size_t		*cpi;		/* their primordia */
 	size_t		 ncp;		/* how many */
 	size_t		*gpos;		/* per gap: the first near cut after
 					   its start, in cp */
-	struct cutp	*mid;		/* the near ones that are not cuts */
+	struct cutv	 mid;		/* the near ones that are not cuts */
 	size_t		 nmid;
 	size_t		 ncut, cut_n;	/* how many, and n when they were cut */
 };
@@ -144,6 +169,21 @@ pull_at(const struct field *F, double q)
 {
 	return F->hs == 1.5 ? 1 / (q * sqrt(q)) : F->hs == 1 ? 1 / q :
 	    pow(q, -F->hs);
+}
+
+void	inhib_cutv_alloc(struct cutv *, size_t n);
+void	inhib_cutv_free(struct cutv *);
+
+/* Entry d of v: primordium (c, s) at radius r, its floor fl. */
+static inline void
+cutv_set(const struct cutv *v, size_t d, double c, double s, double r,
+    double fl)
+{
+	v->c[d] = c;
+	v->s[d] = s;
+	v->q0[d] = R0 * R0 + r * r;
+	v->r2[d] = 2 * R0 * r;
+	v->fl[d] = fl;
 }
 
 /* The far field (inhibition_far.c). */

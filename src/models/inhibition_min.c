@@ -214,8 +214,8 @@ inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 		*fl = pull_at(F, (R0 + r) * (R0 + r));
 		F->floor += *fl;
 		if (i + k < F->n)
-			F->mid[F->nmid++] = (struct cutp){ F->c[i], F->s[i],
-			    R0 * R0 + r * r, 2 * R0 * r, *fl };
+			cutv_set(&F->mid, F->nmid++, F->c[i], F->s[i], r,
+			    *fl);
 	}
 	/* The near cuts, in order; the far ones' pulls are the far field's. */
 	F->ncp = 0;
@@ -225,13 +225,19 @@ inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 
 		if (i >= F->from) {
 			F->cpi[F->ncp] = i;
-			F->cp[F->ncp++] = (struct cutp){ F->c[i], F->s[i],
-			    R0 * R0 + r * r, 2 * R0 * r, F->fl[F->n - 1 - i] };
+			cutv_set(&F->cp, F->ncp++, F->c[i], F->s[i], r,
+			    F->fl[F->n - 1 - i]);
 		}
 		F->gpos[c] = F->ncp;	/* cut c itself is before gap c */
 	}
 	for (size_t c = 0; c < F->ncp; c++) {
-		F->cp[F->ncp + c] = F->cp[c];
+		size_t d = F->ncp + c;
+
+		F->cp.c[d] = F->cp.c[c];
+		F->cp.s[d] = F->cp.s[c];
+		F->cp.q0[d] = F->cp.q0[c];
+		F->cp.r2[d] = F->cp.r2[c];
+		F->cp.fl[d] = F->cp.fl[c];
 		F->cpi[F->ncp + c] = F->cpi[c];
 	}
 	/*
