@@ -15,15 +15,17 @@ struct part {
 /*
  * The least cosine of the angle from (c, s) to a point of part p
  * narrower than pi: -1 if the opposite point is inside (the sines
- * say), else at the farther end.  No branch the compiler must keep.
+ * say), else at the farther end.  No branch the compiler must keep:
+ * selects only, which it can run on vectors (cuts_lanes()).
  */
 static inline double
 least_cos(double c, double s, const struct part *p)
 {
-	int opp = (c * p->sl - s * p->cl >= 0) & (s * p->ch - c * p->sh >= 0);
+	double x = c * p->sl - s * p->cl, y = s * p->ch - c * p->sh;
 	double a = p->cl * c + p->sl * s, b = p->ch * c + p->sh * s;
+	double least = a < b ? a : b, opp = x >= 0 ? -1 : least;
 
-	return opp ? -1 : a < b ? a : b;
+	return y >= 0 ? opp : least;
 }
 
 /*
@@ -95,8 +97,9 @@ side_lanes(const struct cutv *v, size_t from, size_t to, double cx,
 /* The same, each where it pulls least in part p; s = 3. */
 static HOT double
 cuts_lanes(const struct cutv *v, size_t from, size_t to,
-    const struct part *p)
+    const struct part *part)
 {
+	const struct part pt = *part, *p = &pt;	/* in registers */
 	double acc[LANES] = { 0 }, sum = 0;
 	size_t d = from;
 

@@ -328,6 +328,29 @@ far_halves(const struct field *F, const double *x, double *even,
 		(j % 2 ? odd : even)[j / 2] = x[j];
 }
 
+/* A primordium joins a row: moment k += w[k] q[k] (cos, sin)(m phi). */
+static inline void
+far_join(double *restrict mc, double *restrict ms, const double *restrict w,
+    const double *restrict q, double c, double s, size_t len)
+{
+	size_t k = 0;
+
+	/* LANES a pass: -O2 vectorises no loop that leaves a remainder. */
+	for (; k + LANES <= len; k += LANES)
+		for (int l = 0; l < LANES; l++) {
+			double v = w[k + l] * q[k + l];
+
+			mc[k + l] += v * c;
+			ms[k + l] += v * s;
+		}
+	for (; k < len; k++) {
+		double v = w[k] * q[k];
+
+		mc[k] += v * c;
+		ms[k] += v * s;
+	}
+}
+
 /*
  * The modes from the moments, mode m = sum over its row of fh(j) x
  * moment (j, m), fh the growth's factors split by parity; with the
@@ -343,31 +366,14 @@ far_modes(struct field *F, double fh[2][MODES_MAX / 2 + 1],
 	for (int m = 0; m <= F->nmodes; m++) {
 		double *restrict mc = F->Mc + F->row[m];
 		double *restrict ms = F->Ms + F->row[m];
-		const double *p = fh[m % 2] + m / 2, *w = F->w + F->row[m];
+		const double *restrict p = fh[m % 2] + m / 2;
+		const double *restrict w = F->w + F->row[m];
 		size_t len = F->row[m + 1] - F->row[m], i = 0;
 		double ac[LANES] = { 0 }, as[LANES] = { 0 }, c = 0, s = 0;
 
 		if (ph != NULL) {
-			const double *q = ph[m % 2] + m / 2;
-			double cj = cm[m], sj = sm[m];
-
-			size_t k = 0;
-
-			/* LANES at a time too: -O2 vectorises no loop that
-			 * leaves a remainder, only the inner one here. */
-			for (; k + LANES <= len; k += LANES)
-				for (int l = 0; l < LANES; l++) {
-					double v = w[k + l] * q[k + l];
-
-					mc[k + l] += v * cj;
-					ms[k + l] += v * sj;
-				}
-			for (; k < len; k++) {
-				double v = w[k] * q[k];
-
-				mc[k] += v * cj;
-				ms[k] += v * sj;
-			}
+			far_join(mc, ms, w, ph[m % 2] + m / 2, cm[m], sm[m],
+			    len);
 		}
 		for (; i + LANES <= len; i += LANES)
 			for (int l = 0; l < LANES; l++) {
