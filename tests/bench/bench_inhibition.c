@@ -100,10 +100,16 @@ main(void)
 
 		printf("G = %g, %ld primordia: ", sweep[i].G, sweep[i].count);
 		fflush(stdout);
-		t = run(sweep[i].count, sweep[i].G, 0, &s, 0);
-		if (t < 0)
-			return 1;
-		printf("%.1f us each (settled at %.4f degrees)\n", t /
+		/* Best of 3: a slow minute should not set a row. */
+		t = -1;
+		for (int k = 0; k < 3; k++) {
+			double tk = run(sweep[i].count, sweep[i].G, 0, &s, 0);
+
+			if (tk < 0)
+				return 1;
+			t = t < 0 || tk < t ? tk : t;
+		}
+		printf("%.1f us each, best of 3 (settled at %.4f degrees)\n", t /
 		    (double)sweep[i].count * 1e6, s);
 		if (run(sweep[i].count < 1500 ? sweep[i].count : 1500, sweep[i].G, 0,
 		    &s, 1) < 0)
