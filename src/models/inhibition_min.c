@@ -202,21 +202,24 @@ double
 inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 {
 	size_t k = F->near < F->n ? F->near : F->n, best = 0, gmin = k;
-	double th = 0, emin = HUGE_VAL;
+	double th = 0, emin = HUGE_VAL, base = 0;
 
 	cuts_update(F, cuts, k);
-	/* Opposite each primordium its pull is least: the floor of E. */
-	F->floor = 0;
+	/*
+	 * Opposite each primordium its pull is least: the floor of E, summed
+	 * apart (F->floor in the loop was stored and read again each time).
+	 */
 	F->nmid = 0;
 	for (size_t i = F->from; i < F->n; i++) {
 		double *fl = &F->fl[F->n - 1 - i], r = F->r[F->n - 1 - i];
 
 		*fl = pull_at(F, (R0 + r) * (R0 + r));
-		F->floor += *fl;
+		base += *fl;
 		if (i + k < F->n)
 			cutv_set(&F->mid, F->nmid++, F->c[i], F->s[i], r,
 			    *fl);
 	}
+	F->floor = base;
 	/* The near cuts, in order; the far ones' pulls are the far field's. */
 	F->ncp = 0;
 	for (size_t c = 0; c < k; c++) {
