@@ -52,13 +52,15 @@ least_pull(const struct field *F, size_t i, const struct part *p)
 }
 
 /*
- * Sums over near primordia: most bounds take 3 to 16, summed inline,
- * two at a time for s = 3 (1/x + 1/y = (x + y) / xy, one division);
- * runs of LONG or more (the last tier's, the near ones that are not
- * cuts) LANES at a time in functions built for AVX2 too (HOT), where
- * a call costs less than the lanes save.
+ * Sums over near primordia: a side of a part (the cuts before it, or
+ * after) is 4 to 8 cuts in the first three tiers, the last tier's whole
+ * gap some hundreds.  Runs of LANES a side or more go to functions that
+ * take LANES at once, built for AVX2 too (HOT), where a call costs less
+ * than the lanes save; shorter ones inline, two at a time for s = 3
+ * (1/x + 1/y = (x + y) / xy, one division).  A lone side of LONG or
+ * more the same (the ends' bounds: 16).
  */
-#define LONG		4
+#define LONG		8
 
 /* The lanes' partial sums added up, always in this order. */
 static inline double
@@ -254,11 +256,12 @@ mid_above(const struct field *F, size_t k, const struct part *p)
  * from the gap a pull hardly changes across it.  The third at 64 cuts
  * in 8 parts, not 48 in 4, spares the last tier enough gaps at slow
  * growth to cost 15% less at G = 0.0005 (the same angles).  With the
- * sums on vectors, closer first tiers pay: 8 cuts, not 6, and the
- * second's 16 all part by part, not 6 of them, four to a side for a
- * vector each: G = 0.0005 0.37 -> 0.30 s for 6,000, G = 0.002 0.52 ->
- * 0.44 s for 20,000 (best of 9 and 5); 16 cuts for the first, no
- * better.
+ * sums on vectors, closer first tiers pay: the first 8 cuts, not 6
+ * (four a side, a vector each), and the second all its 16 part by
+ * part, not 6 of them: G = 0.0005 0.37 -> 0.30 s for 6,000, G = 0.002
+ * 0.52 -> 0.44 s for 20,000 (best of 9 and 5).  No better, within 8%:
+ * 16 cuts for the first; the second in 2 parts; the third of 48 or 96
+ * cuts, in 4 parts, or 32 of its 64 part by part; 32 of the last's.
  */
 static const struct {
 	size_t		 cuts;

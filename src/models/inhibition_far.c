@@ -438,19 +438,10 @@ inhib_far_step(struct field *F)
 			join = 1;	/* the last: below */
 			break;
 		}
-		for (int m = 0; m <= F->nmodes; m++) {
-			const double *w = F->w + F->row[m];
-			const double *p = ph[m % 2] + m / 2;
-			double *mc = F->Mc + F->row[m], *ms = F->Ms + F->row[m];
-			size_t len = F->row[m + 1] - F->row[m];
-
-			for (size_t i = 0; i < len; i++) {
-				double v = w[i] * p[i];
-
-				mc[i] += v * cm[m];
-				ms[i] += v * sm[m];
-			}
-		}
+		for (int m = 0; m <= F->nmodes; m++)
+			far_join(F->Mc + F->row[m], F->Ms + F->row[m], F->w +
+			    F->row[m], ph[m % 2] + m / 2, cm[m], sm[m],
+			    F->row[m + 1] - F->row[m]);
 	}
 	far_factors(F, t, f);
 	far_halves(F, f, fh[0], fh[1]);
@@ -464,8 +455,8 @@ inhib_far_step(struct field *F)
  * = l mod LANES turned by LANES th a time): one chain of 200 turns was
  * 8% of the time at G = 0.0005 (perf).
  */
-HOT void
-inhib_far_energy(const struct field *F, double th, int modes, double e[3])
+static HOT void
+far_energy(const struct field *F, double th, int modes, double e[3])
 {
 	double cm[LANES], sm[LANES], a0[LANES] = { 0 }, a1[LANES] = { 0 };
 	double a2[LANES] = { 0 }, cw, sw;
@@ -506,4 +497,10 @@ inhib_far_energy(const struct field *F, double th, int modes, double e[3])
 		e[1] += a1[l];
 		e[2] += a2[l];
 	}
+}
+
+void
+inhib_far_energy(const struct field *F, double th, int modes, double e[3])
+{
+	far_energy(F, th, modes, e);
 }

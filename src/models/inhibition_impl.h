@@ -44,12 +44,15 @@ struct cutv {
 /*
  * The functions that hold those sums are built twice, for AVX2 and for
  * the baseline, and the CPU picks at load time (GCC's and Clang's
- * target_clones, on x86-64 where the C library has ifunc): four lanes
+ * target_clones, on x86-64 where the C library has ifunc).  Static
+ * functions only: Clang names a global clone's entry NAME.ifunc, which
+ * callers in other files do not find.  Four lanes
  * where AVX2 has them, two with SSE2 alone.  FMA is left out: a*b + c
  * is rounded twice in both builds (-std=c11 contracts nothing), so both
  * give the same bits (-DNO_CLONES builds the baseline alone, to compare).
  */
-#if defined(__x86_64__) && defined(__GLIBC__) && defined(__has_attribute) && !defined(NO_CLONES)
+#if defined(__x86_64__) && defined(__GLIBC__) && !defined(NO_CLONES) && \
+    defined(__has_attribute)
 #if __has_attribute(target_clones)
 #define HOT	__attribute__((target_clones("avx2", "default")))
 #endif
