@@ -545,6 +545,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	inhib_cutv_alloc(&F.cp, 2 * near_count(gmin) + 2);
 	F.cpi = xcalloc(2 * near_count(gmin) + 2, sizeof(*F.cpi));
 	F.gpos = xcalloc(near_count(gmin) + 1, sizeof(*F.gpos));
+	F.fnear = xcalloc(near_count(gmin) + 1, sizeof(*F.fnear));
 	inhib_cutv_alloc(&F.mid, N);
 	/*
 	 * The far field, but for the power law's reference sum of all
@@ -663,6 +664,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	inhib_cutv_free(&F.cp);
 	free(F.cpi);
 	free(F.gpos);
+	free(F.fnear);
 	inhib_cutv_free(&F.mid);
 	free(F.w);
 	free(F.Mc);

@@ -77,8 +77,8 @@ lanes_sum(const double acc[LANES])
  * Entries a0 to a1 - 1 of v above their floors at (xa, ya), and b0 to
  * b1 - 1 at (xb, yb); s = 3.
  */
-static HOT double
-sides_lanes(const struct cutv *v, size_t a0, size_t a1, double xa,
+static inline double
+sides_sum(const struct cutv *v, size_t a0, size_t a1, double xa,
     double ya, size_t b0, size_t b1, double xb, double yb)
 {
 	double acc[LANES] = { 0 }, sum = 0;
@@ -102,6 +102,13 @@ sides_lanes(const struct cutv *v, size_t a0, size_t a1, double xa,
 		}
 	}
 	return sum + lanes_sum(acc);
+}
+
+static HOT double
+sides_lanes(const struct cutv *v, size_t a0, size_t a1, double xa,
+    double ya, size_t b0, size_t b1, double xb, double yb)
+{
+	return sides_sum(v, a0, a1, xa, ya, b0, b1, xb, yb);
 }
 
 /* The same, each where it pulls least in part p; s = 3. */
@@ -340,7 +347,8 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 		double e[3] = { 0, 0, 0 };
 		int modes = F->nmodes < BOUND_MODES ? F->nmodes : BOUND_MODES;
 
-		inhib_far_energy(F, (a + b) / 2, modes, e);
+		inhib_far_energy(F, cos((a + b) / 2), sin((a + b) / 2), modes,
+		    e);
 		far = fmax(F->far_least, e[0] - F->tail[0] - (fabs(e[1]) +
 		    F->tail[1]) * (b - a) / 2 - F->far_curv * (b - a) *
 		    (b - a) / 8);
@@ -402,29 +410,57 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 }
 
 /*
+ * The first tier's near part for every gap into F->fnear, in one pass
+ * at the start of a step (a call a gap cost a tenth of the step at G =
+ * 0.002): the nearest near cuts, each at the end of the gap farther
+ * from it; NAN where those ends are not the farthest points.
+ */
+static HOT void
+first_near(const struct field *F, const struct cut *cuts, size_t k,
+    double *out)
+{
+	size_t kn = F->ncp, nc = tiers[0].cuts < kn ? tiers[0].cuts : kn;
+
+	for (size_t g = 0; g < k; g++) {
+		size_t first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
+		size_t mid = first + nc / 2;
+		const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
+		struct part whole = { cuts[g].th, gap_end(cuts, k, g),
+		    cuts[g].c, cuts[g].s, end->c, end->s };
+
+		if (!straight_from(F, first, first + nc, &whole))
+			out[g] = NAN;
+		else if (F->hs == 1.5)
+			out[g] = sides_sum(&F->cp, first, mid, end->c, end->s,
+			    mid, first + nc, cuts[g].c, cuts[g].s);
+		else
+			out[g] = side_above(F, first, mid, end->c, end->s) +
+			    side_above(F, mid, first + nc, cuts[g].c,
+			    cuts[g].s);
+	}
+}
+
+void
+inhib_first_near(struct field *F, const struct cut *cuts, size_t k)
+{
+	first_near(F, cuts, k, F->fnear);
+}
+
+/*
  * The first tier's bound, the only one most gaps get: the floor, the
- * far field's least, and the nearest near cuts, each at the end of the
- * gap farther from it; as inhib_gap_bound() takes it, without its parts,
- * tiers and stops.  inhib_gap_bound() itself where those ends are not the
- * farthest points.
+ * far field's least, and the near part inhib_first_near() found;
+ * inhib_gap_bound() itself where that is NAN.
  */
 double
 inhib_first_bound(const struct field *F, const struct cut *cuts, size_t k,
     size_t g, double a, double b, double stop, double *at)
 {
-	double near;
-	size_t kn = F->ncp, nc = tiers[0].cuts < kn ? tiers[0].cuts : kn;
-	size_t first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
-	const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
-	struct part whole = { a, b, cuts[g].c, cuts[g].s, end->c,
-	    end->s };
+	double near = F->floor + F->fnear[g];
 
-	if (!straight_from(F, first, first + nc, &whole))
+	if (isnan(near))
 		return inhib_gap_bound(F, cuts, k, g, a, b, 0, HUGE_VAL, NULL,
 		    at);
 	*at = (a + b) / 2;
-	near = F->floor + sides_above(F, first, first + nc / 2, end->c,
-	    end->s, first + nc / 2, first + nc, cuts[g].c, cuts[g].s);
 	if (!F->moments)
 		return near;
 	/* The grid's bound only where the far field's least falls short. */

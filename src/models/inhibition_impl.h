@@ -130,6 +130,8 @@ struct field {
 	struct cutv	 cp;		/* the near cuts in order, twice round */
 	size_t		*cpi;		/* their primordia */
 	size_t		 ncp;		/* how many */
+	double		*fnear;		/* per gap: the first bound's near part
+					   (inhib_first_near()) */
 	size_t		*gpos;		/* per gap: the first near cut after
 					   its start, in cp */
 	struct cutv	 mid;		/* the near ones that are not cuts */
@@ -195,8 +197,8 @@ void	inhib_far_grid(struct field *, int modes);
 double	inhib_far_least(const struct field *, double lo, double hi);
 void	inhib_far_step(struct field *);
 void	inhib_far_summary(struct field *);
-void	inhib_far_energy(const struct field *, double th, int modes,
-	    double e[3]);
+void	inhib_far_energy(const struct field *, double ct, double st,
+	    int modes, double e[3]);
 
 /* The Gaussian kernel's modes (inhibition_gauss.c). */
 void	inhib_gauss_init(struct field *, size_t count, int exact);
@@ -214,6 +216,7 @@ double	inhib_minimise(const struct field *, const struct cut *, size_t k,
 double	inhib_next_angle(struct field *, struct cut *, struct gap *);
 
 /* Lower bounds of the energy in a gap (inhibition_bounds.c). */
+void	inhib_first_near(struct field *, const struct cut *, size_t k);
 double	inhib_first_bound(const struct field *, const struct cut *,
 	    size_t k, size_t g, double a, double b, double stop, double *at);
 double	inhib_gap_bound(const struct field *, const struct cut *, size_t k,

@@ -66,9 +66,11 @@ near_energy(const struct field *F, double ct, double st, double e[3])
 void
 inhib_energy(const struct field *F, double th, double e[3])
 {
-	near_energy(F, cos(th), sin(th), e);
+	double ct = cos(th), st = sin(th);
+
+	near_energy(F, ct, st, e);
 	if (F->moments)
-		inhib_far_energy(F, th, F->nmodes, e);
+		inhib_far_energy(F, ct, st, F->nmodes, e);
 }
 
 /* The near ones' E alone, LANES at a time as near_energy() sums it. */
@@ -104,9 +106,10 @@ near_only(const struct field *F, double ct, double st)
 double
 inhib_energy_only(const struct field *F, double th)
 {
-	double e[3] = { near_only(F, cos(th), sin(th)), 0, 0 };
+	double ct = cos(th), st = sin(th), e[3] = { near_only(F, ct, st), 0,
+	    0 };
 
 	if (F->moments)
-		inhib_far_energy(F, th, F->nmodes, e);
+		inhib_far_energy(F, ct, st, F->nmodes, e);
 	return e[0];
 }

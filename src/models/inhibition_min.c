@@ -243,6 +243,7 @@ inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 		F->cp.fl[d] = F->cp.fl[c];
 		F->cpi[F->ncp + c] = F->cpi[c];
 	}
+	inhib_first_near(F, cuts, k);
 	/*
 	 * First the gap where the last divergence would put it: its minimum
 	 * is mostly the least, and rules out the most gaps soonest.  Then
