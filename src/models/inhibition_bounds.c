@@ -411,8 +411,8 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 
 /*
  * The first tier's near part for every gap into F->fnear, in one pass
- * at the start of a step (a call a gap cost a tenth of the step at G =
- * 0.002): the nearest near cuts, each at the end of the gap farther
+ * at the start of a step (a call a gap: 0.49 -> 0.45 s for 20,000 at G
+ * = 0.002): the nearest near cuts, each at the end of the gap farther
  * from it; NAN where those ends are not the farthest points.
  */
 static HOT void
