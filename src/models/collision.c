@@ -277,11 +277,14 @@ rising_est(const struct coll *C, double L)
 		double below = curve_area(&C->cv, curve_t(&C->cv, L * i /
 		    EST_SAMPLES));
 
-		while (m + 1 < C->nlaw && EST_LOOSE * (area + 2 * sqrt(3) *
-		    C->law[m] * C->law[m] * (double)C->law_step) <= below) {
-			area += 2 * sqrt(3) * C->law[m] * C->law[m] *
+		for (; m + 1 < C->nlaw; m++) {
+			/* law_step primordia of the law's radius at m */
+			double hex = 2 * sqrt(3) * C->law[m] * C->law[m] *
 			    (double)C->law_step;
-			m++;
+
+			if (!(EST_LOOSE * (area + hex) <= below))
+				break;
+			area += hex;
 		}
 		r_est[i] = C->law[m];
 	}

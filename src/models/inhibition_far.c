@@ -451,10 +451,9 @@ inhib_far_step(struct field *F)
 
 /*
  * The far field's E, E', E'' at the angle th of cosine ct and sine st
- * from its first modes, added to e.
- * cos and sin (m th) by rotation, in LANES chains side by side (modes m
- * = l mod LANES turned by LANES th a time): one chain of 200 turns was
- * 8% of the time at G = 0.0005 (perf).
+ * from its first modes, added to e.  cos and sin (m th) by rotation, in
+ * LANES chains side by side (modes m = l mod LANES turned by LANES th a
+ * time): one chain of 200 turns was 8% of the time at G = 0.0005.
  */
 static HOT void
 far_energy(const struct field *F, double ct, double st, int modes,

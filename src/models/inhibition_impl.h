@@ -44,12 +44,12 @@ struct cutv {
 /*
  * The functions that hold those sums are built twice, for AVX2 and for
  * the baseline, and the CPU picks at load time (GCC's and Clang's
- * target_clones, on x86-64 where the C library has ifunc).  Static
- * functions only: Clang names a global clone's entry NAME.ifunc, which
- * callers in other files do not find.  Four lanes
- * where AVX2 has them, two with SSE2 alone.  FMA is left out: a*b + c
- * is rounded twice in both builds (-std=c11 contracts nothing), so both
- * give the same bits (-DNO_CLONES builds the baseline alone, to compare).
+ * target_clones, on x86-64 where the C library has ifunc): four lanes
+ * where AVX2 has them, two with SSE2 alone.  Static functions only:
+ * Clang names a global clone's entry NAME.ifunc, which callers in other
+ * files do not find.  FMA is left out: a*b + c is rounded twice in both
+ * builds (-std=c11 contracts nothing), so both give the same bits
+ * (-DNO_CLONES builds the baseline alone, to compare).
  */
 #if defined(__x86_64__) && defined(__GLIBC__) && !defined(NO_CLONES) && \
     defined(__has_attribute)

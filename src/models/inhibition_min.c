@@ -207,7 +207,7 @@ inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
 	cuts_update(F, cuts, k);
 	/*
 	 * Opposite each primordium its pull is least: the floor of E, summed
-	 * apart (F->floor in the loop was stored and read again each time).
+	 * in a local (F->floor would be stored and read again each time).
 	 */
 	F->nmid = 0;
 	for (size_t i = F->from; i < F->n; i++) {

@@ -26,6 +26,8 @@ struct load {
 	int		 record;	/* keep each setting as written */
 	int		 listing;	/* keep a given one left unused */
 	int		 overridden;	/* --set given */
+	int		 alone;		/* the file without it: 1 loads, -1
+					   does not, 0 not tried yet */
 };
 
 static inline int

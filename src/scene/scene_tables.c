@@ -260,10 +260,11 @@ file_alone_loads(const struct load *L)
  * would not load.  0, 1 to drop it, or -1 after the error.
  */
 static int
-unused_given(const struct load *L, int line, const char *what,
-    const char *why)
+unused_given(struct load *L, int line, const char *what, const char *why)
 {
-	if (line >= DIAG_LINE_SET || !L->overridden || !file_alone_loads(L)) {
+	if (L->overridden && L->alone == 0)	/* once a load */
+		L->alone = file_alone_loads(L) ? 1 : -1;
+	if (line >= DIAG_LINE_SET || !L->overridden || L->alone < 0) {
 		diag(ST_SCENE, L->file, line, 0, "'%s' does not apply %s", what,
 		    why);
 		return -1;
