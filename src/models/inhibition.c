@@ -672,6 +672,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	free(F.gv);
 	free(F.gd);
 	free(F.tw);
+	free(F.rev);
 	return 0;
 }
 

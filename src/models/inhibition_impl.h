@@ -107,8 +107,8 @@ struct field {
 					   circle where the far field is known
 					   (inhib_far_least()) */
 	double		*gv, *gd;	/* its E and E' there */
-	double		*tw;		/* the grid's cos and sin (2 pi j /
-					   grid), j < grid / 2 */
+	double		*tw;		/* the transform's turns (fft()) */
+	int		*rev;		/* j's bits reversed, j < grid */
 	double		 m2;		/* sum m^2 |mode m|: E'' at most */
 	double		 gerr;		/* the grid's rounding, at most */
 	double		*gt;		/* Gaussian: per primordium cos and
