@@ -174,14 +174,15 @@ static void	far_grid(struct field *, const double *mag);
 
 /* amp[m] = |mode m|, m <= nmodes, LANES at a time (a sqrt each). */
 static HOT void
-far_amplitudes(const struct field *F, double *amp)
+far_amplitudes(const struct field *F, double *restrict amp)
 {
+	const double *Fc = F->Fc, *Fs = F->Fs;
 	int m = 0;
 
 	for (; m + LANES <= F->nmodes + 1; m += LANES)
 		for (int l = 0; l < LANES; l++)
-			amp[m + l] = sqrt(F->Fc[m + l] * F->Fc[m + l] +
-			    F->Fs[m + l] * F->Fs[m + l]);
+			amp[m + l] = sqrt(Fc[m + l] * Fc[m + l] + Fs[m + l] *
+			    Fs[m + l]);
 	for (; m <= F->nmodes; m++)
 		amp[m] = sqrt(F->Fc[m] * F->Fc[m] + F->Fs[m] * F->Fs[m]);
 }
@@ -504,7 +505,8 @@ far_energy(const struct field *F, double ct, double st, int modes,
     double e[3])
 {
 	double cm[LANES], sm[LANES], a0[LANES] = { 0 }, a1[LANES] = { 0 };
-	double a2[LANES] = { 0 }, cw, sw;
+	double a2[LANES] = { 0 }, kl[LANES], cw, sw;
+	const double *Fc = F->Fc, *Fs = F->Fs;
 	int m = 0;
 
 	cm[0] = 1;
@@ -517,9 +519,12 @@ far_energy(const struct field *F, double ct, double st, int modes,
 	}
 	cw = cm[LANES - 1] * cm[1] - sm[LANES - 1] * sm[1];
 	sw = sm[LANES - 1] * cm[1] + cm[LANES - 1] * sm[1];
+	for (int l = 0; l < LANES; l++)
+		kl[l] = l;
+	/* m + l as a double kept in a lane: converted, it took AVX2's lanes. */
 	for (; m + LANES <= modes + 1; m += LANES)
 		for (int l = 0; l < LANES; l++) {
-			double fc = F->Fc[m + l], fs = F->Fs[m + l], k = m + l;
+			double fc = Fc[m + l], fs = Fs[m + l], k = kl[l];
 			double v = fc * cm[l] + fs * sm[l], nc;
 
 			a0[l] += v;
@@ -528,6 +533,7 @@ far_energy(const struct field *F, double ct, double st, int modes,
 			nc = cm[l] * cw - sm[l] * sw;
 			sm[l] = sm[l] * cw + cm[l] * sw;
 			cm[l] = nc;
+			kl[l] = k + LANES;
 		}
 	for (int l = 0; m + l <= modes; l++) {
 		double fc = F->Fc[m + l], fs = F->Fs[m + l], k = m + l;
