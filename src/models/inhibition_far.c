@@ -214,7 +214,10 @@ inhib_far_summary(struct field *F)
 		far_grid(F, amp);
 }
 
-/* LANES butterflies, a and b apart (restrict: the compiler may load all first). */
+/*
+ * LANES butterflies, a and b apart (restrict: the compiler may load
+ * them all first).
+ */
 static inline void
 butterflies(double *restrict ar, double *restrict ai, double *restrict br,
     double *restrict bi, const double *restrict tc,
@@ -242,6 +245,9 @@ butterflies(double *restrict ar, double *restrict ai, double *restrict br,
  * of a step at G = 0.0005, one butterfly at a time); each is the same
  * arithmetic either way.
  */
+_Static_assert(LANES >= 1 && (LANES & (LANES - 1)) == 0 && LANES <= 64,
+    "fft(): a stage's half from LANES on is a multiple of LANES");
+
 static HOT void
 fft(const struct field *F, double *restrict re, double *restrict im)
 {

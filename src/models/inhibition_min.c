@@ -111,9 +111,9 @@ cutcmp(const void *a, const void *b)
  * first among equal angles, as a stable sort of them newest first).
  * From one step to the next the newest joins and, with k the same, the
  * oldest leaves: one removal and one insertion keep the order, where a
- * sort of them all took 8% of the time; while k grows by one a step (the
- * first near_count() steps) the insertion alone.  Otherwise they are
- * sorted afresh.
+ * sort of them all took 8% of the time; where k grows by one a step
+ * (the first steps, and wherever near_count() rises with the growth)
+ * the insertion alone.  Otherwise they are sorted afresh.
  */
 static void
 cuts_update(struct field *F, struct cut *cuts, size_t k)
@@ -214,7 +214,9 @@ floor_lanes(const double *restrict r, double *restrict fl, size_t n)
 /*
  * Each near one's least pull into F->fl, and their sum, the floor of
  * E, returned: one at a time, they were a third of the step's set-up at
- * G = 0.002.
+ * G = 0.002.  Summed in lanes, the floor is rounded otherwise than one
+ * by one, oldest first, as before; it feeds only the lower bounds,
+ * never E, and the angles were the same bytes (108 cases compared).
  */
 static double
 floors(struct field *F)
