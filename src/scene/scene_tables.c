@@ -68,7 +68,10 @@ load_paths(const struct table *tab, void *base, const char *path)
 
 		if (r->type != T_GROUP)
 			continue;
-		snprintf(sub, sizeof(sub), "%s.%s", path, r->name);
+		/* A group's path past PATH_LEN is a programming error (tables). */
+		if (snprintf(sub, sizeof(sub), "%s.%s", path, r->name) >=
+		    (int)sizeof(sub))
+			abort();
 		load_paths(r->sub, (char *)base + r->off, sub);
 	}
 }
@@ -164,12 +167,15 @@ load_record(struct load *L, const config_setting_t *s)
 
 	for (const config_setting_t *p = s; config_setting_parent(p) != NULL;
 	    p = config_setting_parent(p)) {
-		if (config_setting_name(p) != NULL)
-			snprintf(part, sizeof(part), "%s%s%s",
-			    config_setting_name(p), *path ? "." : "", path);
-		else
-			snprintf(part, sizeof(part), "%d%s%s",
-			    config_setting_index(p), *path ? "." : "", path);
+		int n = config_setting_name(p) != NULL ?
+		    snprintf(part, sizeof(part), "%s%s%s",
+		    config_setting_name(p), *path ? "." : "", path) :
+		    snprintf(part, sizeof(part), "%d%s%s",
+		    config_setting_index(p), *path ? "." : "", path);
+
+		/* Longer than any setting's path (PATH_LEN): its tail will do. */
+		if (n < 0 || (size_t)n >= sizeof(part))
+			break;
 		memcpy(path, part, sizeof(path));
 	}
 	sc->written = xreallocarray(sc->written, sc->nwritten + 1,
