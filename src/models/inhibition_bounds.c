@@ -177,9 +177,11 @@ cuts_above(const struct field *F, const struct cutv *v, size_t from,
  * circle) are each less than pi from the far end of the gap: then the
  * ones before the gap pull least at its end, and at every part's high
  * end; the ones after, at its start and the parts' low ends.  The
- * outermost two say it for all.
+ * outermost two say it for all.  Inline: first_near()'s AVX2 clone
+ * called it as baseline code, a gap at a time, 5% of all the time at
+ * G = 0.002 (18.8 -> 17.9 us a primordium).
  */
-static int
+static inline int
 straight_from(const struct field *F, size_t from, size_t to,
     const struct part *gap)
 {
