@@ -72,6 +72,19 @@
  * cell tests in one branch, not four: 6% slower.  Asking for the
  * patch's tiles before the writes: no faster.
  *
+ * What a closer map or a better walk could win at most, measured by a
+ * replay: a run's t and rows recorded, then the run again with one
+ * look a walk, at its answer (CLI, CSV written, best of 3, us a
+ * primordium).  With cover_add() kept, the falling rows cost 1.5 to
+ * 2.1 (the dome 0.96; the whole run 1.31); without it, 0.7 to 0.9 (the
+ * dome 0.67).  On the sphere's 300,000, 5.5 -> 2.1 -> 0.8, the
+ * hemisphere's 3.0 -> 2.0 -> 0.9, the disk to the tip 4.8 -> 1.7 ->
+ * 0.7.  So with cells of 0.6 r_min the map's upkeep alone, 0.7 to 1.35
+ * us (the dome's 0.29) where early radii are five times r_min, is up to
+ * the dome's whole time, and three rows (the sphere's and hemisphere's
+ * 300,000, the sphere to the tip) stay over 1.5 times the dome with
+ * every needless look spared: the looks are not the only cost.
+ *
  * cover_skip() on that sphere (a map of 32 MB; 55 MB to the tip, the
  * dome's 17 MB): 5.5 calls a walk, 103 tile words read, and two thirds
  * of its samples (perf) on the first word's load.  Kept per tile and
