@@ -261,7 +261,13 @@ floors(struct field *F)
  * of all 232 gaps 6.2 us a step, the tiers above them 7.3, 3.0 and 1.9
  * (56, 13 and 3 gaps a step), the searches 3.3 (2 a step).  The
  * replay's own 15 us at G = 0.0005 is two thirds the far field (its
- * moments alone 5.4 us).
+ * moments alone 5.4 us).  Counted on the gaps the first bounds let
+ * through (55 and 63 a step at G = 0.001 and 0.0005): a bound from all
+ * the near cuts, each at its least over each of 4 parts, would rule out
+ * 50 and 54 of them (8 parts: 52 and 59; the whole gap: 30 and 19);
+ * the two cuts at the gap's ends taken part by part, 0.8 and 0.1.  It
+ * is the many cuts beyond the nearest 8 or 16 that the gaps lack, not
+ * closer parts; summed one by one they cost more than the tiers do.
  */
 double
 inhib_next_angle(struct field *F, struct cut *cuts, struct gap *gaps)
