@@ -1,7 +1,8 @@
 /*
  * kdtree.c - the nearest organs to a point, from a k-d tree over the
  * organs' positions: the neighbours the parastichy analysis measures
- * contacts by (parastichy.c) and the inhibition model's spacing.
+ * contacts by (parastichy.c), the inhibition model's spacing, and
+ * the neighbours of measured points (unordered.c).
  *
  * A tree, because organ sizes may differ by orders of magnitude (the
  * inhibition model's grown radii) where a grid of one cell size would
@@ -250,17 +251,14 @@ kd_nearest(const struct kd *T, const double p[3], size_t self, int earlier,
 	query(T, 0, 0, T->n, &lk, nb, 0, (double [3]){ 0, 0, 0 });
 }
 
-void
-kd_init(struct kd *T, const struct result *r)
+/* The tree over pt[0 .. T->n), filled in. */
+static void
+kd_build(struct kd *T)
 {
 	double bmin[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
 	double bmax[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
 
-	*T = (struct kd){ .n = r->count };
-	T->pt = xcalloc(r->count ? r->count : 1, sizeof(*T->pt));
-	for (size_t i = 0; i < r->count; i++) {
-		memcpy(T->pt[i].p, r->organs[i].pos, sizeof(T->pt[i].p));
-		T->pt[i].i = i;
+	for (size_t i = 0; i < T->n; i++)
 		for (int a = 0; a < 3; a++) {
 			double v = T->pt[i].p[a];
 
@@ -268,8 +266,31 @@ kd_init(struct kd *T, const struct result *r)
 			bmin[a] = v < bmin[a] ? v : bmin[a];
 			bmax[a] = v > bmax[a] ? v : bmax[a];
 		}
+	build(T, 0, T->n, bmin, bmax);
+}
+
+void
+kd_init(struct kd *T, const struct result *r)
+{
+	*T = (struct kd){ .n = r->count };
+	T->pt = xcalloc(r->count ? r->count : 1, sizeof(*T->pt));
+	for (size_t i = 0; i < r->count; i++) {
+		memcpy(T->pt[i].p, r->organs[i].pos, sizeof(T->pt[i].p));
+		T->pt[i].i = i;
 	}
-	build(T, 0, r->count, bmin, bmax);
+	kd_build(T);
+}
+
+void
+kd_init_points(struct kd *T, const double (*p)[3], size_t n)
+{
+	*T = (struct kd){ .n = n };
+	T->pt = xcalloc(n ? n : 1, sizeof(*T->pt));
+	for (size_t i = 0; i < n; i++) {
+		memcpy(T->pt[i].p, p[i], sizeof(T->pt[i].p));
+		T->pt[i].i = i;
+	}
+	kd_build(T);
 }
 
 void

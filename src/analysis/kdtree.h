@@ -38,9 +38,14 @@ struct kd_near {
 };
 
 void	kd_init(struct kd *, const struct result *);
+/* The same over points p[0 .. n), organ i being p[i]. */
+void	kd_init_points(struct kd *, const double (*p)[3], size_t n);
 void	kd_free(struct kd *);
 
-/* The KD_K nearest to p but organ self, or of those before self if earlier. */
+/*
+ * The KD_K nearest to p but organ self, or of those before self if
+ * earlier; self SIZE_MAX (no organ) for the nearest to a place.
+ */
 void	kd_nearest(const struct kd *, const double p[3], size_t self,
 	    int earlier, struct kd_near *);
 
