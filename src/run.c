@@ -18,8 +18,8 @@
  * for the estimate, and again in its turn.
  *
  * -o never names what the run reads: the scene, its parts' scenes, the
- * template, the organ meshes; that is checked before anything is
- * written.
+ * template, the organ meshes, a model's own input (a points file); that
+ * is checked before anything is written.
  */
 #include <errno.h>
 #include <math.h>
@@ -29,6 +29,7 @@
 #include "scene/compound.h"
 #include "diag.h"
 #include "meshes/meshes.h"
+#include "models/model.h"
 #include "writers/output.h"
 #include "scene/override.h"
 #include "writers/plan.h"
@@ -212,6 +213,11 @@ inputs(const struct job *j, const struct compound *c)
 		    c->parts[i]->object);
 		output_input(c->parts[i]->file, what);
 	}
+	/* A model's own inputs (the measured model's points file). */
+	for (size_t i = 0; i < c->n; i++)
+		if (c->parts[i]->sc.model->inputs != NULL)
+			c->parts[i]->sc.model->inputs(c->parts[i]->sc.params,
+			    c->parts[i]->file, output_input);
 	meshes_inputs(c);
 }
 

@@ -82,7 +82,7 @@ unordered_new(const struct axis *A, size_t n)
 	U->rise = U->rise_err = U->contact = NAN;
 	U->count = n;
 	for (size_t i = 0; i < n; i++)
-		U->c[i] = (struct ucontact){ { -1, -1 }, { 0, 0 } };
+		U->c[i] = (struct uorgan){ { -1, -1 }, { 0, 0 }, 0 };
 	return U;
 }
 
@@ -152,12 +152,13 @@ step_k(const struct band_lattice *L, const double l[2], double alpha,
  */
 static void
 contacts_of(const struct field *F, const struct band_lattice *L,
-    double alpha, double noise, size_t i, int older_out, struct ucontact *c,
+    double alpha, double noise, size_t i, int older_out, struct uorgan *c,
     int pair[2], int *spans)
 {
 	long long at[2][2] = { { 0, 0 }, { 0, 0 } };
 
-	*c = (struct ucontact){ { -1, -1 }, { 0, 0 } };
+	c->prev[0] = c->prev[1] = -1;
+	c->dk[0] = c->dk[1] = 0;
 	pair[0] = pair[1] = 0;
 	*spans = 0;
 	for (int m = 0; m < F->nnn[i]; m++) {
@@ -662,6 +663,8 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	struct kd T;
 	double noise;
 
+	for (size_t i = 0; i < n; i++)
+		U->c[i].s = ap[i].s;
 	if (n < 10)
 		return U;
 	p = xcalloc(n, sizeof(*p));

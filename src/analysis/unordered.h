@@ -36,14 +36,16 @@ struct uzone {
 };
 
 /*
- * An organ's nearest earlier neighbour turning each way about the axis
- * (older_out: earlier is farther from the tip, else nearer), and how
- * many organs of the spiral lie between (the parastichy number the
- * contact shows); -1, 0 for none.
+ * An organ as measured: its nearest earlier neighbour turning each way
+ * about the axis (older_out: earlier is farther from the tip, else
+ * nearer) and how many organs of the spiral lie between (the parastichy
+ * number the contact shows), -1 and 0 for none; and where it lies along
+ * the curve from the tip.
  */
-struct ucontact {
+struct uorgan {
 	int32_t		 prev[2];
 	int32_t		 dk[2];
+	double		 s;
 };
 
 /* What was measured; one allocation (free() it). */
@@ -67,7 +69,7 @@ struct unordered {
 	struct uzone	 zone[UZONES_MAX];
 	size_t		 nzones;
 	size_t		 count;
-	struct ucontact	 c[];
+	struct uorgan	 c[];		/* count of them */
 };
 
 /*

@@ -48,6 +48,8 @@ struct model {
 	int		 emerges;	/* the angles are found, not given: the
 					   model sets rays itself (and divergence
 					   does not apply) */
+	int		 counts_itself;	/* its organs are its input's: count
+					   does not apply */
 	/*
 	 * Why row k of its table does not apply to params as given, its
 	 * other settings leaving it unused ("with inhibition.kernel
@@ -55,6 +57,13 @@ struct model {
 	 * NULL: every row always applies.
 	 */
 	const char	*(*unused)(const void *params, size_t k);
+	/*
+	 * The files its settings name and it reads, each given to add()
+	 * with what it is, so that -o never names one; params as loaded
+	 * from scene (their names are relative to it).  NULL: none.
+	 */
+	void		(*inputs)(const void *params, const char *scene,
+			    void (*add)(const char *path, const char *what));
 };
 
 /* Every model, NULL-terminated (models.c); at most MODELS_MAX. */

@@ -9,7 +9,7 @@
 #include "models/model.h"
 
 extern const struct model planar_model, cylindrical_model, collision_model,
-    area_model, inhibition_model;
+    area_model, inhibition_model, measured_model;
 
 const struct model *const models[] = {
 	&planar_model,
@@ -17,6 +17,7 @@ const struct model *const models[] = {
 	&collision_model,
 	&area_model,
 	&inhibition_model,
+	&measured_model,
 	NULL
 };
 

@@ -42,6 +42,7 @@ struct info_item {
 
 struct flat;
 struct meshes;
+struct unordered;
 
 /* How the SVG preview shows a structure. */
 enum projection {
@@ -88,6 +89,13 @@ struct result {
 	double		 frame_f;	/* f: 0 .. 1 over the frames */
 	struct info_item info[INFO_MAX];
 	int		 ninfo;
+	/*
+	 * Organs in no known order, measured without one (the measured
+	 * model; analysis/unordered.h): what --info and --svg say of its
+	 * spirals instead of reading them from the order.  One allocation,
+	 * owned; NULL for the models, whose order is their own.
+	 */
+	struct unordered *unordered;
 };
 
 static inline void

@@ -22,6 +22,7 @@ result_free(struct result *r)
 	free(r->objects);
 	free(r->sub);
 	flat_free(r->flat);
+	free(r->unordered);
 	*r = (struct result){0};
 }
 

@@ -225,8 +225,12 @@ scene_applies(const struct scene *sc, const struct table *tab, size_t k,
 	const char *w = NULL;
 
 	if (tab == &scene_table && k == S_DIVERGENCE && sc->model->emerges)
-		snprintf(why, sz, "to model \"%s\", whose angle emerges",
-		    sc->model->name);
+		snprintf(why, sz, "to model \"%s\", whose angle %s",
+		    sc->model->name, sc->model->counts_itself ? "is measured" :
+		    "emerges");
+	else if (tab == &scene_table && k == S_COUNT && sc->model->counts_itself)
+		snprintf(why, sz, "to model \"%s\", whose organs are its "
+		    "input's", sc->model->name);
 	else if (tab == sc->model->settings && sc->model->unused != NULL &&
 	    (w = sc->model->unused(sc->params, k)) != NULL)
 		snprintf(why, sz, "%s", w);
