@@ -81,6 +81,7 @@ unordered_new(const struct axis *A, size_t n)
 	U->vogel_c = U->vogel_c_err = U->exponent = U->exponent_err = NAN;
 	U->rise = U->rise_err = U->contact = NAN;
 	U->count = n;
+	U->unit = 1;
 	for (size_t i = 0; i < n; i++)
 		U->c[i] = (struct uorgan){ { -1, -1 }, { 0, 0 }, 0 };
 	return U;
@@ -511,6 +512,40 @@ zone_add(struct unordered *U, const struct band *B,
 	}
 }
 
+/* The larger number a zone names: its pair's, or its transition's. */
+static int
+zone_n(const struct uzone *z)
+{
+	int n = z->n;
+
+	for (int k = 0; k < z->nseen; k++)
+		if (z->seen[k][1] > n)
+			n = z->seen[k][1];
+	return n;
+}
+
+/*
+ * The oldest organs (at the rim or base if older_out, else at the tip)
+ * have too few earlier ones to show their true contacts: zones there
+ * holding fewer than about 1.5 n organs of the next zone's pair are
+ * their artefact, as parastichy.c drops them.
+ */
+static void
+boundary(struct unordered *U, int older_out)
+{
+	while (U->nzones > 1) {
+		size_t end = older_out ? U->nzones - 1 : 0;
+		size_t in = older_out ? end - 1 : 1;
+
+		if ((double)U->zone[end].organs > 1.5 * zone_n(&U->zone[in]))
+			break;
+		if (!older_out)
+			memmove(U->zone, U->zone + 1, (U->nzones - 1) *
+			    sizeof(*U->zone));
+		U->nzones--;
+	}
+}
+
 /* The divergence over the bands: weighted, its error widened by scatter. */
 static void
 divergence(struct unordered *U, const struct band *B, size_t nb)
@@ -759,6 +794,7 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	}
 	for (size_t b = 0; b < nb; b++)
 		zone_add(U, &B[b], ap, order);
+	boundary(U, older_out);
 	divergence(U, B, nb);
 	/* Counted the other way, the spiral turns back. */
 	if (older_out && !isnan(U->divergence))

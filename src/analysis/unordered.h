@@ -66,6 +66,8 @@ struct unordered {
 	/* The area per organ over 2 pi rho: a cylinder's rise. */
 	double		 rise, rise_err;
 	double		 contact;	/* the shortest step, median */
+	double		 unit;		/* the result's length per the
+					   fit's (its lengths are the fit's) */
 	struct uzone	 zone[UZONES_MAX];
 	size_t		 nzones;
 	size_t		 count;

@@ -138,9 +138,10 @@ cmp_double(const void *a, const void *b)
 }
 
 /*
- * Each point's radius, half the median distance to its six nearest
- * (a click's jitter averages out), and the closest pair; no two points
- * may stand within a tenth of the spacing (one organ clicked twice).
+ * Each point's radius, half the median distance to its four nearest
+ * (a lattice's first shell, but for the third direction's pair; a
+ * click's jitter averages out), and the closest pair; no two points may
+ * stand within a tenth of the spacing (one organ clicked twice).
  */
 static int
 spacing(const struct points *P, const double (*p)[3], const char *path,
@@ -153,11 +154,11 @@ spacing(const struct points *P, const double (*p)[3], const char *path,
 	kd_init_points(&T, p, P->count);
 	for (size_t i = 0; i < P->count && rc == 0; i++) {
 		struct kd_near nb;
-		double d[6];
+		double d[4];
 		int n = 0;
 
 		kd_nearest(&T, p[i], i, 0, &nb);
-		for (int k = 0; k < nb.n && k < 6; k++)
+		for (int k = 0; k < nb.n && k < 4; k++)
 			d[n++] = sqrt(nb.d2[k]) / nb.inv;
 		qsort(d, (size_t)n, sizeof(*d), cmp_double);
 		radius[i] = n > 0 ? (n % 2 ? d[n / 2] : (d[n / 2 - 1] +
@@ -203,12 +204,14 @@ facts(struct result *res, const struct points *P, const size_t *row,
 	if (!isnan(U->divergence)) {
 		double d = U->divergence;
 
+		/* Followed from the tip outward. */
+		double out = U->older_out ? fmod(360 - d, 360) : d;
+
 		result_info_labelled(res, "divergence-measured",
 		    "mean error bands", 3, d <= 180 ? d : 360 - d,
 		    U->divergence_err, (double)U->divergence_bands);
-		/* Organ 0 the oldest, at the rim: towards the tip. */
-		result_info_text(res, "spiral", d <= 180 ? "counter-clockwise" :
-		    "clockwise");
+		result_info_text(res, "spiral", out <= 180 ?
+		    "counter-clockwise outward" : "clockwise outward");
 	}
 	if (!isnan(U->vogel_c))
 		result_info_labelled(res, "vogel", "c c-error exponent "
@@ -250,6 +253,33 @@ order_agrees(struct result *res, const struct points *P, const size_t *row,
 	if (all > 0)
 		result_info(res, "order-agrees", 1, (double)(same[0] > same[1] ?
 		    same[0] : same[1]) / (double)all);
+}
+
+/*
+ * Which organs are the older: where the file's n counts from the rim or
+ * base (a plant's order, the collision model's), those far from the
+ * tip; else, and without an n, those near it, as Vogel counts (a head's
+ * outermost florets then read their contacts inward, where the spirals
+ * a botanist counts at the rim run).
+ */
+static int
+older_out(const struct points *P, const size_t *row,
+    const struct axis_point *ap)
+{
+	double sn = 0, ss = 0, snn = 0, sns = 0, k = (double)P->count;
+
+	if (P->n == NULL)
+		return 0;
+	for (size_t i = 0; i < P->count; i++) {
+		double n = (double)P->n[row[i]];
+
+		sn += n;
+		ss += ap[i].s;
+		snn += n * n;
+		sns += n * ap[i].s;
+	}
+	/* n falling as s rises: counted from the far end. */
+	return k * sns - sn * ss < 0;
 }
 
 /* The organs, centred, scaled, each framed on the fitted surface. */
@@ -331,8 +361,8 @@ measured_run(const struct model_ctx *ctx, struct result *res)
 	}
 	ap = xcalloc(P.count, sizeof(*ap));
 	axis_points(&A, (const double (*)[3])p, P.count, ap);
-	/* Organ 0 the oldest: a plant's own order, rim or base first. */
-	U = unordered_measure(&A, ap, (const double (*)[3])p, P.count, 1);
+	U = unordered_measure(&A, ap, (const double (*)[3])p, P.count,
+	    older_out(&P, row, ap));
 	for (size_t i = 0; i < P.count; i++)
 		far = fmax(far, hypot(p[i][0] - A.centre[0],
 		    p[i][1] - A.centre[1]));
@@ -346,6 +376,7 @@ measured_run(const struct model_ctx *ctx, struct result *res)
 	res->rim_last = 1;
 	facts(res, &P, row, U, M, unit, closest, dmin);
 	order_agrees(res, &P, row, U);
+	U->unit = unit;
 	res->unordered = U;
 	axis_free(&A);
 	free(ap);

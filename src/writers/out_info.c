@@ -5,6 +5,7 @@
 #include "result/flatten.h"
 #include "analysis/parastichy.h"
 #include "writers/plan.h"
+#include "writers/unordered_out.h"
 #include "writers/writer.h"
 
 /* "key: label v; label v", a label a value (labels: words). */
@@ -225,7 +226,9 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 		sink_puts(s, it->text);
 		sink_putc(s, '\n');
 	}
-	if (r->count >= 3) {
+	if (r->unordered != NULL)
+		unordered_info(s, r);
+	else if (r->count >= 3) {
 		/* Measured on the organs as placed, whatever the model. */
 		struct para_zone z[64];
 		size_t nz = para_zones(r, NULL, z, 64);

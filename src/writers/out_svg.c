@@ -18,6 +18,8 @@
 #include "result/flatten.h"
 #include "mem.h"
 #include "analysis/parastichy.h"
+#include "analysis/unordered.h"
+#include "writers/unordered_out.h"
 #include "writers/writer.h"
 
 #define BINS	64	/* along the structure, for the arc length */
@@ -482,7 +484,8 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 	double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
 	double pad, w, h, em, rmed = 0;
 	struct para_zone z[64];
-	size_t nz = r->count >= 3 ? para_zones(r, NULL, z, 64) : 0;
+	size_t nz = r->unordered != NULL ? unordered_para_zones(r->unordered, z,
+	    64) : r->count >= 3 ? para_zones(r, NULL, z, 64) : 0;
 	struct page *P = xcalloc(1, sizeof(*P));
 	char line[160];
 	int keylines, f[128];
@@ -490,9 +493,10 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 
 	(void)opts;
 	P->r = r;
-	P->p = project(r, &P->unrolled);
+	P->p = r->unordered != NULL ? unordered_svg_page(r, &P->unrolled) :
+	    project(r, &P->unrolled);
 	P->pair = xcalloc(r->count ? r->count : 1, sizeof(*P->pair));
-	if (nz > 0)
+	if (nz > 0 && r->unordered == NULL)
 		para_pairs(r, P->pair);
 	for (size_t i = 0; i < r->count; i++) {
 		for (int k = 0; k < 2; k++) {
@@ -543,8 +547,12 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 	/* Every family the zones show, counted near the rim or base. */
 	P->first = nz > 0 ? (size_t)z[0].from : 0;
 	nf = families(z, nz, f, 128);
-	for (size_t i = 0; i < nf; i++)
-		family(s, P, i, f[i]);
+	if (r->unordered != NULL)
+		unordered_svg_families(s, r, P->p, f, nf, family_colours,
+		    NCOLOURS, P->width);
+	else
+		for (size_t i = 0; i < nf; i++)
+			family(s, P, i, f[i]);
 	for (size_t i = 0; i < P->nlabels; i++) {
 		const struct label *l = &P->label[i];
 
@@ -556,7 +564,11 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 	snprintf(line, sizeof(line), "%s: %s model, %zu organs%s", r->name,
 	    r->model, r->count, P->unrolled ? ", unrolled" : ", from above");
 	text(s, lo[0], -hi[1] + 1.2 * em, em, "#222", line);
-	snprintf(line, sizeof(line), "divergence %.4f degrees", r->divergence);
+	if (r->unordered != NULL)
+		unordered_svg_divergence(line, sizeof(line), r);
+	else
+		snprintf(line, sizeof(line), "divergence %.4f degrees",
+		    r->divergence);
 	text(s, lo[0], -hi[1] + 2.4 * em, em, "#222", line);
 	if (nz > 0) {
 		const struct para_zone *b = r->rim_last ? &z[nz - 1] : &z[0];

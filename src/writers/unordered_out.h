@@ -1,0 +1,36 @@
+/*
+ * unordered_out.h - what --info and --svg write of a result measured
+ * without an organ order (analysis/unordered.h), in place of what they
+ * read from a model's order.
+ */
+#ifndef UNORDERED_OUT_H
+#define UNORDERED_OUT_H
+
+#include <stddef.h>
+
+#include "writers/sink.h"
+#include "result/organ.h"
+
+/* The parastichies: and parastichies-along: lines. */
+void	unordered_info(struct sink *, const struct result *);
+
+/*
+ * Organ positions on the page, before the y flip: a head from above, a
+ * surface unrolled (across, the angle times the distance from the
+ * axis; up, the arc length along the fitted curve, tip at the top).
+ */
+double	(*unordered_svg_page(const struct result *, int *unrolled))[2];
+
+/*
+ * The families f[0 .. nf) as curves through the organs each contact
+ * joins, in colours[k % ncolours] (by rank, as the models' are drawn),
+ * width wide; and a mark where the centre is.
+ */
+void	unordered_svg_families(struct sink *, const struct result *,
+	    double (*page)[2], const int *f, size_t nf,
+	    const char *const *colours, size_t ncolours, double width);
+
+/* The legend's line on the divergence: measured, with its error. */
+void	unordered_svg_divergence(char *, size_t, const struct result *);
+
+#endif
