@@ -61,7 +61,7 @@ done <<'EOF'
 planar.scael=0.1|unknown setting 'planar.scael' (did you mean planar.scale?)
 count=0|count 0 is out of range: must be between 1 and 10000000
 count="n + 1"|count: variable 'n' is not available here (it may use f and F)
-model="planr"|model "planr" is not one of: planar cylindrical collision area inhibition (did you mean planar?)
+model="planr"|model "planr" is not one of: planar cylindrical collision area inhibition measured (did you mean planar?)
 organs.2.tilt="1 + q"|organs.tilt: unknown variable 'q'
 planar.scale="0"|planar.scale 0 is out of range: must be greater than 0
 cuont=5|unknown setting 'cuont' (did you mean count?)

@@ -126,12 +126,19 @@ even_directions(const double (*d)[KD_K][2], size_t n, double M[2][2])
 				apply2(&M[0][0], d[i][k][0], d[i][k][1], v[k]);
 				len[k] = v[k][0] * v[k][0] + v[k][1] * v[k][1];
 			}
-			/* The SIX shortest: below the seventh's length. */
+			/* The SIX shortest: up to the sixth's length. */
 			{
 				double t[KD_K];
 
 				memcpy(t, len, sizeof(t));
-				qsort(t, KD_K, sizeof(*t), cmp_double);
+				for (int a = 1; a < KD_K; a++)
+					for (int b = a; b > 0 && t[b] < t[b - 1];
+					    b--) {
+						double x = t[b];
+
+						t[b] = t[b - 1];
+						t[b - 1] = x;
+					}
 				cut = t[SIX - 1];
 			}
 			for (int k = 0; k < KD_K && used < SIX; k++) {
@@ -278,7 +285,7 @@ head(struct axis *A, const struct kd *T, const double (*p)[3], size_t n,
 	double Minv[2][2], det;
 
 	/* The steps to the nearest, of points with a whole set of them. */
-	for (size_t i = 0; i < n; i++) {
+	for (size_t i = 0; i < n; i += stride) {
 		struct kd_near nb;
 
 		kd_nearest(T, p[i], i, 0, &nb);
@@ -607,23 +614,26 @@ axis_find(struct axis *A, const double (*p)[3], size_t n, int has_z,
 {
 	struct kd T;
 	double *d = xcalloc(n ? n : 1, sizeof(*d));
+	size_t nd = 0, stride = n > SAMPLE_MAX ? n / SAMPLE_MAX + 1 : 1;
 	double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
 	double hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
 
 	*A = (struct axis){ .has_z = has_z, .squash = 1 };
 	A->M[0][0] = A->M[1][1] = 1;
 	kd_init_points(&T, p, n);
-	for (size_t i = 0; i < n; i++) {
-		struct kd_near nb;
-
-		kd_nearest(&T, p[i], i, 0, &nb);
-		d[i] = nb.n > 0 ? sqrt(nb.d2[0]) / nb.inv : 0;
+	for (size_t i = 0; i < n; i++)
 		for (int k = 0; k < 3; k++) {
 			lo[k] = fmin(lo[k], p[i][k]);
 			hi[k] = fmax(hi[k], p[i][k]);
 		}
+	/* The median of a sample of SAMPLE_MAX is the median. */
+	for (size_t i = 0; i < n; i += stride) {
+		struct kd_near nb;
+
+		kd_nearest(&T, p[i], i, 0, &nb);
+		d[nd++] = nb.n > 0 ? sqrt(nb.d2[0]) / nb.inv : 0;
 	}
-	A->spacing = median(d, n);
+	A->spacing = median(d, nd);
 	free(d);
 	/* Tall, against its width: a cone, not a dome of a head. */
 	A->surface = has_z && hi[2] - lo[2] > 0.3 * 0.5 * fmax(hi[0] - lo[0],

@@ -45,8 +45,15 @@ lattice_step(const struct field *F, const struct band_lattice *L, size_t i,
 	double rho = (p->rho + q->rho) / 2;
 	double area = (F->area[i] + F->area[j]) / 2;
 
+	double d = q->phi - p->phi;
+
+	/* Both in (-pi, pi]: one wrap at most (remainder() was a third). */
+	if (d > M_PI)
+		d -= 2 * M_PI;
+	else if (d <= -M_PI)
+		d += 2 * M_PI;
 	l[0] = (q->s - p->s) * (rho / L->rho) * (L->area / area);
-	l[1] = remainder(q->phi - p->phi, 2 * M_PI) * L->rho;
+	l[1] = d * L->rho;
 }
 
 int
@@ -222,7 +229,7 @@ refine(const struct field *F, const size_t *pts, size_t n,
     struct band_lattice *L, size_t *total)
 {
 	double S[3] = { 0, 0, 0 }, X[2] = { 0, 0 }, Y[2] = { 0, 0 }, det;
-	double rt = 0;
+	double rt = 0, rs = 0;
 	size_t on = 0, fitted = 0;
 
 	*total = 0;
@@ -271,9 +278,14 @@ refine(const struct field *F, const size_t *pts, size_t n,
 				continue;
 			r = l[1] - (double)x * L->a[1] - (double)y * L->b[1];
 			rt += r * r;
+			r = l[0] - (double)x * L->a[0] - (double)y * L->b[0];
+			rs += r * r;
 		}
 	}
 	rt = fitted > 4 ? sqrt(rt / (double)(fitted - 4)) : 0;
+	rs = fitted > 4 ? sqrt(rs / (double)(fitted - 4)) : 0;
+	L->sigma_s[0] = rs * sqrt(2 * S[2] / det);
+	L->sigma_s[1] = rs * sqrt(2 * S[0] / det);
 	/* Each step is counted from both its ends: half as many. */
 	L->sigma_t[0] = rt * sqrt(2 * S[2] / det);
 	L->sigma_t[1] = rt * sqrt(2 * S[0] / det);
@@ -493,13 +505,13 @@ coverage(const struct field *F, size_t lo, size_t hi, double gap)
 	return n > 0 ? 1 - missing / (2 * M_PI) : 0;
 }
 
-/* The most common of the counts, the median's side on a tie. */
+/* The most common of the counts, and how many of them it is. */
 static long long
-vote(long long c[CUTS])
+vote(long long c[CUTS], int *most)
 {
 	long long best = c[CUTS / 2];
-	int most = 0;
 
+	*most = 0;
 	for (int i = 1; i < CUTS; i++)
 		for (int j = i; j > 0 && c[j] < c[j - 1]; j--) {
 			long long t = c[j];
@@ -510,9 +522,8 @@ vote(long long c[CUTS])
 	for (int i = 0, j; i < CUTS; i = j) {
 		for (j = i; j < CUTS && c[j] == c[i]; j++)
 			;
-		if (j - i > most || (j - i == most && i <= CUTS / 2 &&
-		    CUTS / 2 < j)) {
-			most = j - i;
+		if (j - i > *most) {
+			*most = j - i;
 			best = c[i];
 		}
 	}
@@ -570,6 +581,16 @@ solve_k(struct band_lattice *L, const int f[2][2], long long ku,
 	return 0;
 }
 
+/* That estimate's error, from the fitted steps' spread along the curve. */
+static double
+estimate_error(const struct band_lattice *L, const int f[2])
+{
+	double cross = L->a[0] * L->b[1] - L->a[1] * L->b[0];
+
+	return 2 * M_PI * L->rho * hypot(f[0] * L->sigma_s[0],
+	    f[1] * L->sigma_s[1]) / fabs(cross);
+}
+
 /* The number of organs step (x, y) skips, from the basis's shape. */
 static double
 estimate(const struct band_lattice *L, const int f[2])
@@ -581,23 +602,29 @@ estimate(const struct band_lattice *L, const int f[2])
 }
 
 int
-lattice_count(const struct field *F, struct band_lattice *L)
+lattice_count(const struct field *F, struct band_lattice *L, int count_them)
 {
 	double cross = L->a[0] * L->b[1] - L->a[1] * L->b[0];
-	double reach = 3.5 * (fabs(L->a[0]) + fabs(L->b[0])), cut[CUTS];
+	double reach, cut[CUTS];
 	long long count[2][CUTS], k[2];
-	size_t lo, hi;
+	size_t lo, hi, need[2] = { 0, 0 }, found[2] = { 0, 0 };
 	long *next;
-	int *steps, f2[2][2];
-	double est[2];
+	int *steps, f2[2][2], most[2];
+	double est[2], est_s[2];
 
 	if (cross == 0)
 		return -1;
 	L->ka_est = 2 * M_PI * L->rho * L->a[0] / fabs(cross);
 	L->kb_est = 2 * M_PI * L->rho * L->b[0] / fabs(cross);
+	L->ka_err = estimate_error(L, (const int [2]){ 1, 0 });
+	L->kb_err = estimate_error(L, (const int [2]){ 0, 1 });
 	transversal(L, f2);
 	est[0] = estimate(L, f2[0]);
 	est[1] = estimate(L, f2[1]);
+	for (int f = 0; f < 2; f++)
+		est_s[f] = fabs(f2[f][0] * L->a[0] + f2[f][1] * L->b[0]);
+	/* A step crosses a ring from three steps away at most. */
+	reach = 3.2 * fmax(est_s[0], est_s[1]);
 	/*
 	 * Rings a third of a step apart about the band's middle, but a
 	 * reach inside the outermost and innermost rings, where the spirals
@@ -611,6 +638,7 @@ lattice_count(const struct field *F, struct band_lattice *L)
 		double top = F->sorted_s[F->n - 1 - edge] - step;
 		double bottom = F->sorted_s[edge] + step;
 
+		L->clamped = mid > top ? 1 : mid < bottom ? -1 : 0;
 		if (mid > top)
 			mid = top;
 		if (mid < bottom)
@@ -621,9 +649,13 @@ lattice_count(const struct field *F, struct band_lattice *L)
 	}
 	lo = first_at(F, cut[0] - reach);
 	hi = first_at(F, cut[CUTS - 1] + reach);
-	L->coverage = coverage(F, first_at(F, L->s - 0.6 * reach),
-	    first_at(F, L->s + 0.6 * reach), 4 * sqrt(dot(L->b, L->b)) /
-	    L->rho);
+	if (!count_them) {
+		L->counted = 0;
+		L->ka = L->kb = 0;
+		return 0;
+	}
+	/* Every ring the counts read: where one is cut, spirals end there. */
+	L->coverage = coverage(F, lo, hi, 4 * sqrt(dot(L->b, L->b)) / L->rho);
 	memset(count, 0, sizeof(count));
 	next = xcalloc(hi - lo + 1, sizeof(*next));
 	steps = xcalloc(hi - lo + 1, sizeof(*steps));
@@ -634,6 +666,15 @@ lattice_count(const struct field *F, struct band_lattice *L)
 		/* Twice: a relinked step may meet another. */
 		taken(next, steps, hi - lo, F->order, lo);
 		taken(next, steps, hi - lo, F->order, lo);
+		/* The points whose step must cross the first ring, found. */
+		for (size_t k = lo; k < hi; k++) {
+			double si = F->ap[F->order[k]].s;
+
+			if (si < cut[0] - 1.2 * est_s[f] || si >= cut[CUTS - 1])
+				continue;
+			need[f]++;
+			found[f] += next[k - lo] >= 0;
+		}
 		for (size_t k = lo; k < hi; k++) {
 			double si = F->ap[F->order[k]].s, sj;
 
@@ -647,18 +688,38 @@ lattice_count(const struct field *F, struct band_lattice *L)
 	}
 	free(next);
 	free(steps);
-	k[0] = vote(count[0]);
-	k[1] = vote(count[1]);
+	k[0] = vote(count[0], &most[0]);
+	k[1] = vote(count[1], &most[1]);
 	/*
-	 * A whole ring's counts, where they agree with the basis's shape;
-	 * a cut ring, or counts that do not, are labelled by the angle
-	 * (lattice_by_angle()) from a band next to it.
+	 * A whole ring's counts, where five of the seven rings agree, nine
+	 * in ten organs a step away from them found the next, and the counts
+	 * agree with the basis's shape; a cut ring, or counts that do not,
+	 * are labelled by the angle (lattice_by_angle()) from a band next
+	 * to it.  A count off by one all along a stretch would give every
+	 * band there a wrong divergence that agrees with itself.
 	 */
-	L->counted = L->coverage > 0.97 && k[0] > 0 && k[1] > 0 &&
-	    fabs((double)k[0] - est[0]) <= fmax(2, 0.08 * est[0]) &&
-	    fabs((double)k[1] - est[1]) <= fmax(2, 0.08 * est[1]) &&
-	    solve_k(L, (const int (*)[2])f2, k[0], k[1]) == 0 && L->ka > 0 &&
-	    L->kb != 0;
+	L->counted = L->coverage > 0.97;
+	for (int f = 0; f < 2; f++) {
+		double err = estimate_error(L, f2[f]);
+		int counts = k[f] > 0 && most[f] >= 5 &&
+		    (double)found[f] >= 0.9 * (double)need[f] &&
+		    fabs((double)k[f] - est[f]) <= fmin(fmax(0.6, 2.5 * err),
+		    fmax(2, 0.08 * est[f]));
+
+		/*
+		 * Or the shape alone, where it leaves no doubt (a model's
+		 * organs, no jitter): a count can miss or double a spiral
+		 * the shape cannot.
+		 */
+		if (err < 0.3 && fabs(est[f] - round(est[f])) < 0.25 &&
+		    round(est[f]) > 0 && (!counts || k[f] != llround(est[f]))) {
+			k[f] = llround(est[f]);
+			counts = 1;
+		}
+		L->counted &= counts;
+	}
+	L->counted = L->counted && solve_k(L, (const int (*)[2])f2, k[0],
+	    k[1]) == 0 && L->ka > 0 && L->kb != 0;
 	if (!L->counted)
 		L->ka = L->kb = 0;
 	return 0;
@@ -667,15 +728,18 @@ lattice_count(const struct field *F, struct band_lattice *L)
 /*
  * The organs a step skips, from its turn: a step of k organs turns k
  * divergences less whole turns, and of the few k its shape allows (the
- * estimate, give or take a tenth) the turns of no two are near (at the
- * golden angle k and k + 13 differ by 12.5 degrees, nearer ones more),
- * while a fitted step's turn is known to a small fraction of that.
+ * estimate, give or take four of its errors or an eighth) the turns of no two are
+ * near (at the golden angle k and k + 13 differ by 12.5 degrees, k and
+ * k + 89 by 1.8), while a fitted step's turn is known to a small
+ * fraction of that: the one whose turn is within tol, the next well
+ * clear of it; else 0.
  */
 static long long
-by_angle(double phi, double est, double alpha)
+by_angle(double phi, double est, double err, double alpha, double tol)
 {
 	double best = HUGE_VAL, second = HUGE_VAL;
-	long long at = 0, k0 = llround(est), w = llround(fmax(3, 0.1 * est));
+	long long at = 0, k0 = llround(est);
+	long long w = llround(fmax(fmax(3, 4 * err), 0.12 * fabs(est)));
 
 	for (long long k = k0 - w > 1 ? k0 - w : 1; k <= k0 + w; k++) {
 		double r = fabs(remainder((double)k * alpha - phi, 2 * M_PI));
@@ -687,19 +751,26 @@ by_angle(double phi, double est, double alpha)
 		} else if (r < second)
 			second = r;
 	}
-	return best < 0.05 && second > best + 0.1 ? at : 0;
+	return best <= tol && second > best + 3 * tol ? at : 0;
 }
 
 int
-lattice_by_angle(struct band_lattice *L, double alpha)
+lattice_by_angle(struct band_lattice *L, double alpha, double alpha_err)
 {
 	int f[2][2];
 	long long k[2];
 
 	transversal(L, f);
-	for (int i = 0; i < 2; i++)
+	for (int i = 0; i < 2; i++) {
+		double est = estimate(L, f[i]);
+		double turn = hypot(f[i][0] * L->sigma_t[0], f[i][1] *
+		    L->sigma_t[1]) / L->rho;
+
+		/* Its turn's error, and the divergence's over its organs. */
 		k[i] = by_angle((f[i][0] * L->a[1] + f[i][1] * L->b[1]) /
-		    L->rho, estimate(L, f[i]), alpha);
+		    L->rho, est, estimate_error(L, f[i]), alpha, 5 * turn +
+		    fabs(est) * 5 * alpha_err + 1e-9);
+	}
 	if (k[0] <= 0 || k[1] <= 0 || solve_k(L, (const int (*)[2])f, k[0],
 	    k[1]) != 0 || L->ka == 0 || L->kb == 0) {
 		L->ka = L->kb = 0;

@@ -36,13 +36,18 @@ struct band_lattice {
 	double		 rho, area, s;	/* the reference: the band's medians */
 	double		 a[2], b[2];	/* a reduced basis, both outward */
 	double		 sigma_t[2];	/* the error of a's and b's across */
+	double		 sigma_s[2];	/* and along */
 	double		 on;		/* share of neighbour steps on it */
 	int		 ok;
 	long long	 ka, kb;	/* organs a step of a, of b skips */
 	double		 ka_est, kb_est;	/* the same from a's and b's
 					   shape alone, continuous */
+	double		 ka_err, kb_err;	/* their errors */
 	double		 coverage;	/* of the ring at s, 0 .. 1 */
 	int		 counted;	/* ka, kb counted on a whole ring */
+	int		 clamped;	/* counted at the outermost (1) or
+					   innermost (-1) ring the spirals
+					   cross whole, not its own */
 };
 
 /* The step from point i to point j in the band's coordinates. */
@@ -59,15 +64,18 @@ int	lattice_basis(const struct field *, const size_t *pts, size_t n,
 	    struct band_lattice *);
 /*
  * ka and kb: the spirals of each family counted across the ring at the
- * band's s, counted set where the ring is whole and the counts agree
- * with the basis's shape (ka_est, kb_est, set either way); -1 where
- * the basis has none.
+ * band's s (if count_them), counted set where the ring is whole and the
+ * counts agree with the basis's shape (ka_est, kb_est, set either way);
+ * -1 where the basis has none.
  */
-int	lattice_count(const struct field *, struct band_lattice *);
+int	lattice_count(const struct field *, struct band_lattice *,
+	    int count_them);
 /*
- * ka and kb from the turn of a and b and the divergence alpha (radians)
- * of a band next to this one: 0, or -1 where no one number fits.
+ * ka and kb from the turn of a and b and the divergence alpha (radians,
+ * to alpha_err) of a band next to this one: 0, or -1 where no one
+ * number fits.
  */
-int	lattice_by_angle(struct band_lattice *, double alpha);
+int	lattice_by_angle(struct band_lattice *, double alpha,
+	    double alpha_err);
 
 #endif

@@ -29,7 +29,10 @@
 #include "analysis/unordered.h"
 
 #define BANDS_MAX	48	/* bands a structure is cut into at most */
-#define BAND_MIN	30	/* points in a band at least */
+#define BAND_MIN	8	/* points in a band at least */
+#define BASIS_MIN	64	/* points a band's lattice is read from */
+#define BASIS_MAX	500	/* and at most */
+#define COUNTED_MAX	16	/* bands whose spirals are counted */
 #define SMOOTH		32	/* points either side an area is averaged */
 #define CONTACT_ON	0.45	/* a contact step: within this of |a| */
 
@@ -43,6 +46,7 @@ struct band {
 	int		 lattice;	/* and its numbers */
 	double		 alpha, alpha_sigma;	/* radians; NAN: none */
 	double		 alpha_local;	/* its own, or the nearest band's */
+	double		 noise;		/* of a step's turn (turn_noise()) */
 };
 
 static const double *sort_key;
@@ -113,17 +117,32 @@ step_k(const struct band_lattice *L, const double l[2], double alpha,
 	*q = 0;
 	if (isnan(alpha))
 		return have;
+	/* The lattice's number, its turn agreeing: two checks in one. */
+	if (have && fabs(remainder((double)kr * alpha - phi, 2 * M_PI)) <=
+	    5 * noise) {
+		*q = llround(((double)kr * alpha - phi) / (2 * M_PI));
+		return 1;
+	}
 	from[0] = kr;
 	w[0] = have ? 2 : -1;
 	from[1] = llround(kc);
 	w[1] = llround(0.35 * fabs(kc) + 3);
-	for (int c = 0; c < 2; c++)
-		for (long long t = from[c] - w[c]; t <= from[c] + w[c]; t++) {
+	for (int c = 0; c < 2; c++) {
+		/* t alpha - phi, a turn at a time: one wrap a step. */
+		double turn = remainder((double)(from[c] - w[c]) * alpha - phi,
+		    2 * M_PI), by = remainder(alpha, 2 * M_PI);
+
+		for (long long t = from[c] - w[c]; t <= from[c] + w[c]; t++,
+		    turn += by) {
 			double r;
 
+			if (turn > M_PI)
+				turn -= 2 * M_PI;
+			else if (turn <= -M_PI)
+				turn += 2 * M_PI;
 			if (t == 0 || (c == 1 && have && llabs(t - kr) <= 2))
 				continue;
-			r = fabs(remainder((double)t * alpha - phi, 2 * M_PI));
+			r = fabs(turn);
 			if (r < best) {
 				second = best;
 				best = r;
@@ -131,6 +150,7 @@ step_k(const struct band_lattice *L, const double l[2], double alpha,
 			} else if (r < second)
 				second = r;
 		}
+	}
 	/*
 	 * Within the turns' noise, and the next candidate clear of it: the
 	 * golden angle's k and k + 89 turn 1.8 degrees apart, and a step
@@ -167,20 +187,21 @@ contacts_of(const struct field *F, const struct band_lattice *L,
 		long long dk, q;
 		int side;
 
+		/*
+		 * One on the line through the axis turns neither way (a
+		 * rank of a whorl); a side found is found (the nearest first).
+		 */
 		lattice_step(F, L, i, F->nn[i][m], l);
+		side = l[1] > 0;
+		if (!(fabs(l[1]) > 1e-9 * fabs(L->a[1]) + 1e-300) ||
+		    c->prev[side] >= 0)
+			continue;
 		if (!step_k(L, l, alpha, noise, &dk, &q))
 			continue;
 		/* Counted outward; earlier is toward the older organs. */
 		if (older_out)
 			dk = -dk, q = -q;
-		/*
-		 * Earlier only; and one on the line through the axis turns
-		 * neither way (a rank of a whorl).
-		 */
-		if (dk >= 0 || !(fabs(l[1]) > 1e-9 * fabs(L->a[1]) + 1e-300))
-			continue;
-		side = l[1] > 0;
-		if (c->prev[side] >= 0 || -dk > INT32_MAX)
+		if (dk >= 0 || -dk > INT32_MAX)
 			continue;
 		c->prev[side] = (int32_t)F->nn[i][m];
 		c->dk[side] = (int32_t)-dk;
@@ -249,7 +270,7 @@ band_pairs(const struct field *F, struct band *B, const size_t *pts,
 	}
 	free(t);
 	B->held = best;
-	B->kind = B->m > 0 && 2 * best >= np && 2 * spans >= best &&
+	B->kind = B->m > 0 && 2 * best >= B->organs && 2 * spans >= best &&
 	    para_gcd(B->m, B->n) == 1 ? UZ_PAIR : UZ_TRANSITION;
 	if (B->m == 0)
 		B->kind = UZ_UNCLEAR;
@@ -323,36 +344,145 @@ unlabel(struct band *B)
 	B->alpha = B->alpha_sigma = NAN;
 }
 
+/* The median of the counted bands' divergences from b - w to b + w. */
+static double
+median_alpha(const struct band *B, size_t nb, size_t b, size_t w)
+{
+	double *v = xcalloc(2 * w + 2, sizeof(*v)), ref = B[b].alpha, m;
+	size_t n = 0;
+
+	for (size_t c = b > w ? b - w : 0; c < nb && c <= b + w; c++)
+		if (!isnan(B[c].alpha))
+			v[n++] = ref + remainder(B[c].alpha - ref, 2 * M_PI);
+	qsort(v, n, sizeof(*v), by_double);
+	m = n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+	free(v);
+	return m;
+}
+
 /*
  * A counted band whose divergence is not its neighbours' miscounted:
  * one spiral too few turns a family's step ka divergences less a few
  * degrees.  Against the median of the counted bands within three of it,
- * to a quarter degree (the divergence may drift, not jump).
+ * to a quarter degree (the divergence may drift, not jump), and of all
+ * of them, to a degree: counts are wrong together where a run of
+ * missing organs breaks a spiral in the rings that bands next to each
+ * other share.
  */
 static void
 outliers(struct band *B, size_t nb)
 {
-	double *med = xcalloc(nb + 1, sizeof(*med));
+	double *local = xcalloc(nb + 1, sizeof(*local));
+	double *all = xcalloc(nb + 1, sizeof(*all));
 
 	for (size_t b = 0; b < nb; b++) {
-		double v[7], ref = B[b].alpha;
-		size_t n = 0;
-
-		med[b] = NAN;
-		if (isnan(ref))
+		local[b] = all[b] = NAN;
+		if (isnan(B[b].alpha))
 			continue;
-		for (size_t c = b > 3 ? b - 3 : 0; c < nb && c <= b + 3; c++)
-			if (!isnan(B[c].alpha))
-				v[n++] = ref + remainder(B[c].alpha - ref,
-				    2 * M_PI);
-		qsort(v, n, sizeof(*v), by_double);
-		med[b] = n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+		local[b] = median_alpha(B, nb, b, 3);
+		all[b] = median_alpha(B, nb, b, nb);
 	}
 	for (size_t b = 0; b < nb; b++)
-		if (!isnan(med[b]) && fabs(remainder(B[b].alpha - med[b],
-		    2 * M_PI)) > 0.25 * M_PI / 180 + 5 * B[b].alpha_sigma)
+		if (!isnan(local[b]) && (fabs(remainder(B[b].alpha - local[b],
+		    2 * M_PI)) > 0.25 * M_PI / 180 + 5 * B[b].alpha_sigma ||
+		    fabs(remainder(B[b].alpha - all[b], 2 * M_PI)) > M_PI /
+		    180 + 5 * B[b].alpha_sigma))
 			unlabel(&B[b]);
-	free(med);
+	free(local);
+	free(all);
+}
+
+/*
+ * How far labels by divergence alpha stray from what the bands' shapes
+ * say, in their errors squared, on average; how many bands it labels
+ * into *n.
+ */
+static double
+stray(const struct band *B, size_t nb, double alpha, double err, size_t *n)
+{
+	double chi = 0;
+
+	*n = 0;
+	for (size_t b = 0; b < nb; b++) {
+		struct band_lattice L = B[b].L;
+		double da, db;
+
+		if (!B[b].basis || L.ka_err == 0 || lattice_by_angle(&L,
+		    alpha, err) != 0)
+			continue;
+		da = ((double)L.ka - L.ka_est) / fmax(L.ka_err, 0.2);
+		db = ((double)L.kb - L.kb_est) / fmax(L.kb_err, 0.2);
+		chi += da * da + db * db;
+		(*n)++;
+	}
+	return *n > 0 ? chi / (2 * (double)*n) : HUGE_VAL;
+}
+
+/*
+ * The counted bands' divergences may be an alias: where a family is
+ * miscounted by the same number all along, its count and the true
+ * count's divergence differ, yet each labels every band consistently
+ * in angle (at the golden angle, 32 and 78.6 degrees stand for 34 and
+ * 137.5 everywhere).  Only along the curve do they differ: labels by
+ * an alias stray from the bands' shapes, by one in most bands.  So of
+ * the divergences the counted bands give, their counts and those up to
+ * two off each way, the one whose labels stray least (of those that
+ * label a third of the bands at least); every band is labelled by it, a
+ * counted band whose count gave another too.
+ */
+static void
+alias(struct band *B, size_t nb)
+{
+	double (*h)[2] = xcalloc(25 * nb + 1, sizeof(*h)), best = HUGE_VAL;
+	double at = NAN, at_err = 0;
+	size_t nh = 0, bases = 0;
+
+	for (size_t b = 0; b < nb; b++) {
+		bases += B[b].basis;
+		if (isnan(B[b].alpha))
+			continue;
+		for (int da = -2; da <= 2; da++)
+			for (int db = -2; db <= 2; db++) {
+				struct band v = B[b];
+				int seen = 0;
+
+				v.L.ka += da;
+				v.L.kb += db;
+				if (v.L.ka <= 0 || v.L.kb == 0 ||
+				    band_alpha(&v) != 0)
+					continue;
+				for (size_t k = 0; k < nh && !seen; k++)
+					seen = fabs(remainder(h[k][0] - v.alpha,
+					    2 * M_PI)) < 0.05 * M_PI / 180;
+				if (!seen) {
+					h[nh][0] = v.alpha;
+					h[nh++][1] = v.alpha_sigma;
+				}
+			}
+	}
+	/* The best fit of those that label a third of the bands at least. */
+	for (size_t k = 0; k < nh; k++) {
+		size_t n;
+		double chi = stray(B, nb, h[k][0], h[k][1], &n);
+
+		if (3 * n >= bases && chi < best) {
+			best = chi;
+			at = h[k][0];
+			at_err = h[k][1];
+		}
+	}
+	free(h);
+	if (isnan(at))
+		return;
+	for (size_t b = 0; b < nb; b++) {
+		if (!B[b].lattice || (!isnan(B[b].alpha) &&
+		    fabs(remainder(B[b].alpha - at, 2 * M_PI)) <= M_PI / 180))
+			continue;
+		unlabel(&B[b]);
+		if (lattice_by_angle(&B[b].L, at, at_err) != 0 ||
+		    band_alpha(&B[b]) != 0)
+			unlabel(&B[b]);
+	}
 }
 
 /*
@@ -369,6 +499,17 @@ label(struct band *B, size_t nb)
 	for (size_t b = 0; b < nb; b++)
 		if (B[b].lattice && (!B[b].L.counted || isnan(B[b].alpha)))
 			unlabel(&B[b]);
+	/*
+	 * Bands past the outermost ring the spirals cross whole were all
+	 * counted at that ring: one count, not as many votes.  The band
+	 * next to it keeps it.
+	 */
+	for (size_t b = 0; b < nb; b++)
+		if ((B[b].L.clamped > 0 && b > 0 && B[b - 1].L.clamped > 0) ||
+		    (B[b].L.clamped < 0 && b + 1 < nb &&
+		    B[b + 1].L.clamped < 0))
+			unlabel(&B[b]);
+	alias(B, nb);
 	outliers(B, nb);
 	while (changed) {
 		changed = 0;
@@ -386,7 +527,8 @@ label(struct band *B, size_t nb)
 					by = &B[b + d];
 			if (by == NULL)
 				break;
-			if (lattice_by_angle(&bd->L, by->alpha) != 0 ||
+			if (lattice_by_angle(&bd->L, by->alpha,
+			    by->alpha_sigma) != 0 ||
 			    band_alpha(bd) != 0) {
 				/* Tried once: unclear. */
 				unlabel(bd);
@@ -417,29 +559,29 @@ local_alpha(struct band *B, size_t nb)
 
 /*
  * How far a step's turn is from k divergences, as it goes: the median
- * over the steps the labelled bands round to their lattice, as a
- * standard deviation.  A model's organs are exactly k divergences
- * apart; a photograph's are not.
+ * over the steps a labelled band rounds to its lattice, as a standard
+ * deviation, each band its own (a turn's error falls as the radius
+ * grows), or all of them together where a band has too few.  A model's
+ * organs are exactly k divergences apart; a photograph's are not.
  */
-static double
-turn_noise(const struct field *F, const struct band *B, size_t nb,
-    size_t *pts)
+static void
+turn_noise(const struct field *F, struct band *B, size_t nb)
 {
-	double *r = xcalloc(F->n + 1, sizeof(*r)), med;
-	size_t nr = 0;
+	double *r = xcalloc(3 * F->n + 1, sizeof(*r)), all;
+	size_t nr = 0, *from = xcalloc(nb + 1, sizeof(*from));
 
-	(void)pts;
 	for (size_t b = 0; b < nb; b++) {
 		const struct band_lattice *L = &B[b].L;
 
+		from[b] = nr;
 		if (!B[b].basis || L->ka == 0 || isnan(B[b].alpha_local))
 			continue;
-		/* Every seventh point: enough for a median. */
-		for (size_t k = B[b].from; k < B[b].to && nr < F->n; k += 7) {
+		/* A few hundred points a band are enough for a median. */
+		for (size_t k = B[b].from; k < B[b].to; k += 1 + (B[b].to -
+		    B[b].from) / 300) {
 			size_t i = F->order[k];
 
-			for (int m = 0; m < F->nnn[i] && m < 3 && nr < F->n;
-			    m++) {
+			for (int m = 0; m < F->nnn[i] && m < 3; m++) {
 				double l[2];
 				long long x, y;
 
@@ -452,10 +594,21 @@ turn_noise(const struct field *F, const struct band *B, size_t nb,
 			}
 		}
 	}
+	from[nb] = nr;
+	for (size_t b = 0; b < nb; b++) {
+		size_t n = from[b + 1] - from[b];
+
+		qsort(r + from[b], n, sizeof(*r), by_double);
+		B[b].noise = n >= 20 ? fmax(1.4826 * r[from[b] + n / 2],
+		    1e-12) : NAN;
+	}
 	qsort(r, nr, sizeof(*r), by_double);
-	med = nr > 0 ? r[nr / 2] : HUGE_VAL;
+	all = nr > 0 ? fmax(1.4826 * r[nr / 2], 1e-12) : HUGE_VAL;
+	for (size_t b = 0; b < nb; b++)
+		if (isnan(B[b].noise))
+			B[b].noise = all;
 	free(r);
-	return fmax(1.4826 * med, 1e-12);
+	free(from);
 }
 
 /* Band B into the zones: as parastichy.c joins its runs. */
@@ -465,6 +618,7 @@ zone_add(struct unordered *U, const struct band *B,
 {
 	struct uzone *z = U->nzones > 0 ? &U->zone[U->nzones - 1] : NULL;
 	size_t first = order[B->from];
+	double end = ap[order[B->to - 1]].s;
 
 	if (z != NULL && B->kind == UZ_PAIR && z->kind == UZ_TRANSITION &&
 	    z->nseen == 1 && z->seen[0][0] == B->m && z->seen[0][1] == B->n) {
@@ -478,6 +632,7 @@ zone_add(struct unordered *U, const struct band *B,
 	    z->kind == UZ_PAIR ? z->m == B->m && z->n == B->n :
 	    z->kind == B->kind && B->kind != UZ_PAIR)) {
 		z->organs += B->organs;
+		z->s_end = end;
 		z->agree += z->kind == UZ_PAIR ? B->held : 0;
 		z->cut |= B->lattice && B->L.coverage < 0.97;
 		if (z->kind == UZ_TRANSITION) {
@@ -498,7 +653,8 @@ zone_add(struct unordered *U, const struct band *B,
 		return;
 	z = &U->zone[U->nzones++];
 	*z = (struct uzone){ .kind = B->kind, .from = first,
-	    .s = ap[first].s, .rho = ap[first].rho, .z = ap[first].p[2],
+	    .s = ap[first].s, .s_end = end, .rho = ap[first].rho,
+	    .z = ap[first].p[2],
 	    .organs = B->organs, .cut = B->lattice &&
 	    B->L.coverage < 0.97 };
 	if (B->kind == UZ_PAIR) {
@@ -533,11 +689,14 @@ zone_n(const struct uzone *z)
 static void
 boundary(struct unordered *U, int older_out)
 {
+	size_t gone = 0;
+
 	while (U->nzones > 1) {
 		size_t end = older_out ? U->nzones - 1 : 0;
 		size_t in = older_out ? end - 1 : 1;
 
-		if ((double)U->zone[end].organs > 1.5 * zone_n(&U->zone[in]))
+		gone += U->zone[end].organs;
+		if ((double)gone > 1.5 * zone_n(&U->zone[in]))
 			break;
 		if (!older_out)
 			memmove(U->zone, U->zone + 1, (U->nzones - 1) *
@@ -696,7 +855,6 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	size_t *order, *pts, nb;
 	struct band *B;
 	struct kd T;
-	double noise;
 
 	for (size_t i = 0; i < n; i++)
 		U->c[i].s = ap[i].s;
@@ -758,21 +916,40 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	pts = xcalloc(n, sizeof(*pts));
 	for (size_t b = 0; b < nb; b++) {
 		struct band *bd = &B[b];
-		size_t np = 0;
+		size_t np = 0, lo, hi;
 
 		bd->from = n * b / nb;
 		bd->to = n * (b + 1) / nb;
 		bd->organs = bd->to - bd->from;
 		bd->kind = UZ_UNCLEAR;
 		bd->alpha = NAN;
-		/* Near the axis the unrolled steps mean nothing. */
-		for (size_t k = bd->from; k < bd->to; k++)
+		/*
+		 * The lattice about the band, from BASIS_MIN points at least:
+		 * a narrow band at the rim holds the last ring's organs, whose
+		 * steps go inward and along it only.
+		 */
+		lo = bd->from;
+		hi = bd->to;
+		while (hi - lo < BASIS_MIN && (lo > 0 || hi < n)) {
+			lo -= lo > 0;
+			hi += hi < n;
+		}
+		/*
+		 * Near the axis the unrolled steps mean nothing; of a large
+		 * band, BASIS_MAX points are as good as all.
+		 */
+		for (size_t k = lo; k < hi; k += 1 + (hi - lo) / BASIS_MAX)
 			if (ap[order[k]].rho > 0.25 * A->spacing)
 				pts[np++] = order[k];
 		if (np < 8 || lattice_basis(&F, pts, np, &bd->L) != 0)
 			continue;
 		bd->basis = 1;
-		if (lattice_count(&F, &bd->L) != 0)
+		/*
+		 * Counting reads a few rings of organs: COUNTED_MAX bands
+		 * count, spread out; the others are labelled by the angle.
+		 */
+		if (lattice_count(&F, &bd->L, nb <= COUNTED_MAX || b %
+		    ((nb + COUNTED_MAX - 1) / COUNTED_MAX) == 0) != 0)
 			continue;
 		bd->lattice = 1;
 		if (bd->L.counted)
@@ -780,7 +957,7 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	}
 	label(B, nb);
 	local_alpha(B, nb);
-	noise = turn_noise(&F, B, nb, pts);
+	turn_noise(&F, B, nb);
 	for (size_t b = 0; b < nb; b++) {
 		struct band *bd = &B[b];
 		size_t np = 0;
@@ -790,11 +967,21 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 		for (size_t k = bd->from; k < bd->to; k++)
 			if (ap[order[k]].rho > 0.25 * A->spacing)
 				pts[np++] = order[k];
-		band_pairs(&F, bd, pts, np, older_out, noise, U);
+		band_pairs(&F, bd, pts, np, older_out, bd->noise, U);
 	}
 	for (size_t b = 0; b < nb; b++)
 		zone_add(U, &B[b], ap, order);
 	boundary(U, older_out);
+	/* A pair most of its zone's organs do not hold is not clear. */
+	for (size_t k = 0; k < U->nzones; k++)
+		if (U->zone[k].kind == UZ_PAIR && 2 * U->zone[k].agree <
+		    U->zone[k].organs) {
+			U->zone[k].kind = UZ_TRANSITION;
+			U->zone[k].seen[0][0] = U->zone[k].m;
+			U->zone[k].seen[0][1] = U->zone[k].n;
+			U->zone[k].nseen = 1;
+			U->zone[k].m = U->zone[k].n = 0;
+		}
 	divergence(U, B, nb);
 	/* Counted the other way, the spiral turns back. */
 	if (older_out && !isnan(U->divergence))
@@ -844,8 +1031,7 @@ unordered_para_zones(const struct unordered *U, struct para_zone *z,
 	for (size_t k = 0; k < U->nzones && nz < zmax; k++) {
 		const struct uzone *u = &U->zone[k];
 
-		if (u->kind == UZ_UNCLEAR)
-			continue;
+		/* An unclear zone as a transition that saw nothing. */
 		z[nz] = (struct para_zone){ .from = (long long)u->from,
 		    .m = u->kind == UZ_PAIR ? u->m : 0,
 		    .n = u->kind == UZ_PAIR ? u->n : 0, .rho = u->rho,
@@ -863,8 +1049,5 @@ unordered_para_zones(const struct unordered *U, struct para_zone *z,
 const struct uzone *
 unordered_rim(const struct unordered *U)
 {
-	for (size_t k = U->nzones; k-- > 0;)
-		if (U->zone[k].kind != UZ_UNCLEAR)
-			return &U->zone[k];
-	return NULL;
+	return U->nzones > 0 ? &U->zone[U->nzones - 1] : NULL;
 }

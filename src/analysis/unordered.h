@@ -30,6 +30,7 @@ struct uzone {
 	int		 nseen;
 	size_t		 from;		/* its organ nearest the tip */
 	double		 s, rho, z;	/* where that lies (corrected) */
+	double		 s_end;		/* where its organ farthest lies */
 	size_t		 organs;	/* in it */
 	size_t		 agree;		/* holding its pair */
 	int		 cut;		/* some of its rings cut short */
@@ -89,10 +90,13 @@ struct unordered *unordered_measure(const struct axis *A,
  * the older organs where the result's order has them (rim_last).
  */
 struct unordered *unordered_of_result(const struct result *);
-/* The zones as parastichy.h's, for what draws either; how many. */
+/*
+ * The zones as parastichy.h's, for what draws either (an unclear one a
+ * transition that saw no pair); how many.
+ */
 size_t	unordered_para_zones(const struct unordered *, struct para_zone *,
 	    size_t zmax);
-/* The zone the rim or base shows: the last one not unclear, or NULL. */
+/* The zone at the rim or base, the last (of any kind), or NULL. */
 const struct uzone *unordered_rim(const struct unordered *);
 
 #endif

@@ -35,7 +35,7 @@ unordered_info(struct sink *s, const struct result *r)
 	const struct uzone *rim = unordered_rim(U);
 
 	sink_puts(s, "parastichies: ");
-	if (rim == NULL)
+	if (rim == NULL || rim->kind == UZ_UNCLEAR)
 		sink_puts(s, "none clear");
 	else if (rim->kind == UZ_PAIR) {
 		sink_uint(s, (unsigned long long)rim->m);
