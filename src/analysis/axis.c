@@ -32,7 +32,7 @@
 #include "analysis/kdtree.h"
 
 #define SIX		6	/* neighbours a point's orientation reads */
-#define SAMPLE_MAX	40000	/* points the centre's search reads */
+#define SAMPLE_MAX	20000	/* points the squash, spacing and centre read */
 #define CURVE_NODES	64	/* most nodes of the generating curve */
 
 static int

@@ -72,6 +72,18 @@ lattice_round(const struct band_lattice *L, const double l[2], double tol,
 		return 0;
 	rx = llround(fx);
 	ry = llround(fy);
+	/* Within half the shortest step: that lattice point is the nearest. */
+	{
+		double r[2] = { l[0] - (double)rx * L->a[0] - (double)ry *
+		    L->b[0], l[1] - (double)rx * L->a[1] - (double)ry *
+		    L->b[1] };
+
+		if ((rx != 0 || ry != 0) && 4 * dot(r, r) < dot(L->a, L->a)) {
+			*x = rx;
+			*y = ry;
+			return dot(r, r) <= tol * tol * dot(L->a, L->a);
+		}
+	}
 	/*
 	 * The nearest lattice point but 0 (a step joins two organs):
 	 * rounding the coordinates is not always the nearest, and a
@@ -417,54 +429,44 @@ next_along(const struct field *F, const struct band_lattice *L, size_t i,
 	return best;
 }
 
-static const long *cmp_next;
-
-static int
-by_next(const void *a, const void *b)
-{
-	long x = cmp_next[*(const size_t *)a], y = cmp_next[*(const size_t *)b];
-
-	if (x != y)
-		return x < y ? -1 : 1;
-	return *(const size_t *)a < *(const size_t *)b ? -1 : 1;
-}
-
 /*
  * A point is the next of one point at most, or a spiral would fork:
  * where a step was missed (its neighbour jittered into another cell),
  * the point before it went on two steps to the point the missed one
- * steps to.  The fewest steps win, and the loser steps to the winner,
- * which stands between (i + 2 a = j = p + a: p = i + a).
+ * steps to.  The fewest steps win (the first on a tie), and the loser
+ * steps to the winner, which stands between (i + 2 a = j = p + a: p =
+ * i + a).  claim: -1 for every point, and so again after.
  */
 static void
-taken(long *next, int *steps, size_t n, const size_t *order, size_t lo)
+taken(long *next, int *steps, size_t n, const size_t *order, size_t lo,
+    long *claim)
 {
-	size_t *ix = xcalloc(n + 1, sizeof(*ix));
+	long *touched = xcalloc(n + 1, sizeof(*touched));
+	size_t nt = 0;
 
-	for (size_t k = 0; k < n; k++)
-		ix[k] = k;
-	cmp_next = next;
-	qsort(ix, n, sizeof(*ix), by_next);
-	cmp_next = NULL;
-	for (size_t k = 0, e; k < n; k = e) {
-		size_t keep = k;
+	for (size_t k = 0; k < n; k++) {
+		long j = next[k], w;
+		size_t keep, lose;
 
-		for (e = k; e < n && next[ix[e]] == next[ix[k]]; e++)
-			if (steps[ix[e]] < steps[ix[keep]])
-				keep = e;
-		if (next[ix[k]] < 0)
+		if (j < 0)
 			continue;
-		for (size_t m = k; m < e; m++) {
-			if (m == keep)
-				continue;
-			if (steps[ix[m]] > steps[ix[keep]]) {
-				next[ix[m]] = (long)order[lo + ix[keep]];
-				steps[ix[m]] -= steps[ix[keep]];
-			} else
-				next[ix[m]] = -1;
+		if ((w = claim[j]) < 0) {
+			claim[j] = (long)k;
+			touched[nt++] = j;
+			continue;
 		}
+		keep = steps[k] < steps[w] ? k : (size_t)w;
+		lose = keep == k ? (size_t)w : k;
+		if (steps[lose] > steps[keep]) {
+			next[lose] = (long)order[lo + keep];
+			steps[lose] -= steps[keep];
+		} else
+			next[lose] = -1;
+		claim[j] = (long)keep;
 	}
-	free(ix);
+	while (nt > 0)
+		claim[touched[--nt]] = -1;
+	free(touched);
 }
 
 /* The first point at or after s in the order by s. */
@@ -608,9 +610,9 @@ lattice_count(const struct field *F, struct band_lattice *L, int count_them)
 	double reach, cut[CUTS];
 	long long count[2][CUTS], k[2];
 	size_t lo, hi, need[2] = { 0, 0 }, found[2] = { 0, 0 };
-	long *next;
+	long *next, *claim;
 	int *steps, f2[2][2], most[2];
-	double est[2], est_s[2];
+	double est[2], est_s[2], whole;
 
 	if (cross == 0)
 		return -1;
@@ -625,6 +627,10 @@ lattice_count(const struct field *F, struct band_lattice *L, int count_them)
 		est_s[f] = fabs(f2[f][0] * L->a[0] + f2[f][1] * L->b[0]);
 	/* A step crosses a ring from three steps away at most. */
 	reach = 3.2 * fmax(est_s[0], est_s[1]);
+	/* How much of its own rings the band's organs go round. */
+	L->coverage = coverage(F, first_at(F, L->s - 0.5 * reach),
+	    first_at(F, L->s + 0.5 * reach), 4 * sqrt(dot(L->b, L->b)) /
+	    L->rho);
 	/*
 	 * Rings a third of a step apart about the band's middle, but a
 	 * reach inside the outermost and innermost rings, where the spirals
@@ -647,25 +653,30 @@ lattice_count(const struct field *F, struct band_lattice *L, int count_them)
 			cut[c] = mid + (c - CUTS / 2) * step / 3;
 		L->s = mid;
 	}
+	/*
+	 * The organs a step from which may cross a ring outward; across
+	 * the ring squarely, a family's steps do not cross back.
+	 */
 	lo = first_at(F, cut[0] - reach);
-	hi = first_at(F, cut[CUTS - 1] + reach);
+	hi = first_at(F, cut[CUTS - 1] + 0.5 * reach);
 	if (!count_them) {
 		L->counted = 0;
 		L->ka = L->kb = 0;
 		return 0;
 	}
 	/* Every ring the counts read: where one is cut, spirals end there. */
-	L->coverage = coverage(F, lo, hi, 4 * sqrt(dot(L->b, L->b)) / L->rho);
+	whole = coverage(F, lo, hi, 4 * sqrt(dot(L->b, L->b)) / L->rho);
 	memset(count, 0, sizeof(count));
 	next = xcalloc(hi - lo + 1, sizeof(*next));
+	claim = F->claim;
 	steps = xcalloc(hi - lo + 1, sizeof(*steps));
 	for (int f = 0; f < 2; f++) {
 		for (size_t k = lo; k < hi; k++)
 			next[k - lo] = next_along(F, L, F->order[k], f2[f][0],
 			    f2[f][1], &steps[k - lo]);
 		/* Twice: a relinked step may meet another. */
-		taken(next, steps, hi - lo, F->order, lo);
-		taken(next, steps, hi - lo, F->order, lo);
+		taken(next, steps, hi - lo, F->order, lo, claim);
+		taken(next, steps, hi - lo, F->order, lo, claim);
 		/* The points whose step must cross the first ring, found. */
 		for (size_t k = lo; k < hi; k++) {
 			double si = F->ap[F->order[k]].s;
@@ -698,7 +709,7 @@ lattice_count(const struct field *F, struct band_lattice *L, int count_them)
 	 * to it.  A count off by one all along a stretch would give every
 	 * band there a wrong divergence that agrees with itself.
 	 */
-	L->counted = L->coverage > 0.97;
+	L->counted = whole > 0.97;
 	for (int f = 0; f < 2; f++) {
 		double err = estimate_error(L, f2[f]);
 		int counts = k[f] > 0 && most[f] >= 5 &&

@@ -24,6 +24,7 @@ struct field {
 	const struct kd	*T;		/* over ap[].p */
 	const size_t	*order;		/* the points by s */
 	const double	*sorted_s;	/* s in that order */
+	long		*claim;		/* n of -1: lattice_count()'s room */
 };
 
 /*

@@ -706,16 +706,31 @@ boundary(struct unordered *U, int older_out)
 }
 
 /* The divergence over the bands: weighted, its error widened by scatter. */
+static int
+alpha_of(const struct band *B, int whole)
+{
+	return B->kind == UZ_PAIR && !isnan(B->alpha) && (!whole ||
+	    B->L.coverage > 0.97);
+}
+
 static void
 divergence(struct unordered *U, const struct band *B, size_t nb)
 {
 	double sw = 0, mean = 0, chi = 0, ref = NAN;
-	int used = 0;
+	int used = 0, whole = 0;
 
+	/*
+	 * Whole rings' bands if two at least: on a ring the photograph
+	 * cut, a centre a little off turns the lattice one way more than
+	 * the other, where round a whole ring it cancels.
+	 */
+	for (size_t b = 0; b < nb; b++)
+		whole += alpha_of(&B[b], 1);
+	whole = whole >= 2;
 	for (size_t b = 0; b < nb; b++) {
 		double w, a;
 
-		if (B[b].kind != UZ_PAIR || isnan(B[b].alpha))
+		if (!alpha_of(&B[b], whole))
 			continue;
 		w = 1 / (B[b].alpha_sigma * B[b].alpha_sigma);
 		if (isnan(ref))
@@ -729,7 +744,7 @@ divergence(struct unordered *U, const struct band *B, size_t nb)
 		return;
 	mean /= sw;
 	for (size_t b = 0; b < nb; b++)
-		if (B[b].kind == UZ_PAIR && !isnan(B[b].alpha)) {
+		if (alpha_of(&B[b], whole)) {
 			double d = remainder(B[b].alpha - mean, 2 * M_PI);
 
 			chi += d * d / (B[b].alpha_sigma * B[b].alpha_sigma);
@@ -738,6 +753,31 @@ divergence(struct unordered *U, const struct band *B, size_t nb)
 	U->divergence_err = 180 / M_PI / sqrt(sw) *
 	    (used > 1 && chi / (used - 1) > 1 ? sqrt(chi / (used - 1)) : 1);
 	U->divergence_bands = used;
+	/*
+	 * What the bands share their errors do not show (a centre a
+	 * little off, a squash a little wrong, bear on every band alike,
+	 * more on the inner): half the difference of the inner and outer
+	 * halves' means, if larger.
+	 */
+	if (used >= 4) {
+		double m[2] = { 0, 0 }, w[2] = { 0, 0 };
+		int seen = 0;
+
+		for (size_t b = 0; b < nb; b++) {
+			double wb, a;
+			int half;
+
+			if (!alpha_of(&B[b], whole))
+				continue;
+			half = 2 * seen++ >= used;
+			wb = 1 / (B[b].alpha_sigma * B[b].alpha_sigma);
+			a = mean + remainder(B[b].alpha - mean, 2 * M_PI);
+			m[half] += wb * a;
+			w[half] += wb;
+		}
+		U->divergence_err = fmax(U->divergence_err, 180 / M_PI *
+		    fabs(m[0] / w[0] - m[1] / w[1]) / 2);
+	}
 }
 
 /* Mean and its standard error of v[0 .. n). */
@@ -848,7 +888,8 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
     const double (*raw)[3], size_t n, int older_out)
 {
 	struct unordered *U = unordered_new(A, n);
-	struct field F = { A, ap, n, NULL, NULL, NULL, NULL, NULL, NULL };
+	struct field F = { A, ap, n, NULL, NULL, NULL, NULL, NULL, NULL,
+	    NULL };
 	double (*p)[3], *s, *area;
 	uint32_t (*nn)[KD_K];
 	uint8_t *nnn;
@@ -908,6 +949,9 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	F.T = &T;
 	F.order = order;
 	F.sorted_s = s;
+	F.claim = xcalloc(n, sizeof(*F.claim));
+	for (size_t i = 0; i < n; i++)
+		F.claim[i] = -1;
 	areas(&F, area);
 	F.area = area;
 	nb = n / BAND_MIN < 1 ? 1 : n / BAND_MIN > BANDS_MAX ? BANDS_MAX :
@@ -924,12 +968,12 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 		bd->kind = UZ_UNCLEAR;
 		bd->alpha = NAN;
 		/*
-		 * The lattice about the band, from BASIS_MIN points at least:
-		 * a narrow band at the rim holds the last ring's organs, whose
-		 * steps go inward and along it only.
+		 * The lattice about the band, half as much again either side
+		 * and BASIS_MIN points at least: a band at the rim holds the
+		 * last ring's organs, whose steps go inward and along it only.
 		 */
-		lo = bd->from;
-		hi = bd->to;
+		lo = bd->from > bd->organs / 2 ? bd->from - bd->organs / 2 : 0;
+		hi = bd->to + bd->organs / 2 < n ? bd->to + bd->organs / 2 : n;
 		while (hi - lo < BASIS_MIN && (lo > 0 || hi < n)) {
 			lo -= lo > 0;
 			hi += hi < n;
@@ -972,10 +1016,16 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	for (size_t b = 0; b < nb; b++)
 		zone_add(U, &B[b], ap, order);
 	boundary(U, older_out);
-	/* A pair most of its zone's organs do not hold is not clear. */
+	/*
+	 * A pair most of its zone's organs do not hold is not clear, nor
+	 * one of a zone between two others of fewer organs than its smaller
+	 * number, a wisp of a ring (at either end, where the rings run out,
+	 * a zone may be less than a ring).
+	 */
 	for (size_t k = 0; k < U->nzones; k++)
-		if (U->zone[k].kind == UZ_PAIR && 2 * U->zone[k].agree <
-		    U->zone[k].organs) {
+		if (U->zone[k].kind == UZ_PAIR && (2 * U->zone[k].agree <
+		    U->zone[k].organs || (k > 0 && k + 1 < U->nzones &&
+		    U->zone[k].organs < (size_t)U->zone[k].m))) {
 			U->zone[k].kind = UZ_TRANSITION;
 			U->zone[k].seen[0][0] = U->zone[k].m;
 			U->zone[k].seen[0][1] = U->zone[k].n;
@@ -993,6 +1043,7 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 	free(area);
 	free(s);
 	free(order);
+	free(F.claim);
 	free(nn);
 	free(nnn);
 	kd_free(&T);

@@ -129,57 +129,50 @@ row_order(const struct points *P)
 	return ix;
 }
 
-static int
-cmp_double(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-
-	return x < y ? -1 : x > y;
-}
-
 /*
  * Each point's radius, half the median distance to its four nearest
  * (a lattice's first shell, but for the third direction's pair; a
- * click's jitter averages out), and the closest pair; no two points may
- * stand within a tenth of the spacing (one organ clicked twice).
+ * click's jitter averages out), and the closest pair.  A point within
+ * a tenth of its fourth nearest's distance of another is warned of,
+ * once: one organ clicked twice, likely (its own spacing, not the
+ * head's: organs at a tip or centre may be far smaller than the rest;
+ * a model's first organs may nearly meet).  The same point twice is
+ * the reader's error.
  */
-static int
+static void
 spacing(const struct points *P, const double (*p)[3], const char *path,
-    double spacing, double *radius, size_t closest[2], double *dmin)
+    double *radius, size_t closest[2], double *dmin)
 {
 	struct kd T;
-	int rc = 0;
+	int warned = 0;
 
 	*dmin = HUGE_VAL;
 	kd_init_points(&T, p, P->count);
-	for (size_t i = 0; i < P->count && rc == 0; i++) {
+	for (size_t i = 0; i < P->count; i++) {
 		struct kd_near nb;
-		double d[4];
+		double d[KD_K];
 		int n = 0;
 
 		kd_nearest(&T, p[i], i, 0, &nb);
-		for (int k = 0; k < nb.n && k < 4; k++)
+		for (int k = 0; k < nb.n; k++)
 			d[n++] = sqrt(nb.d2[k]) / nb.inv;
-		qsort(d, (size_t)n, sizeof(*d), cmp_double);
-		radius[i] = n > 0 ? (n % 2 ? d[n / 2] : (d[n / 2 - 1] +
-		    d[n / 2]) / 2) / 2 : 0;
+		radius[i] = n >= 4 ? (d[1] + d[2]) / 4 : n > 0 ? d[0] / 2 : 0;
 		if (n > 0 && d[0] < *dmin) {
 			*dmin = d[0];
 			closest[0] = i;
 			closest[1] = nb.j[0];
 		}
-		if (n > 0 && d[0] < 0.1 * spacing) {
+		if (n >= 4 && d[0] < 0.1 * d[3] && !warned) {
 			size_t j = nb.j[0], late = P->line[i] > P->line[j] ? i : j;
 
-			diag(ST_SCENE, path, P->line[late], 0, "this point is "
-			    "%.3g from the one at line %d, under a tenth of the "
-			    "spacing (%.3g): the same organ twice?", d[0],
-			    P->line[late == i ? j : i], spacing);
-			rc = -1;
+			diag(ST_OK, path, P->line[late], 0, "this point is %.3g "
+			    "from the one at line %d, under a tenth of the "
+			    "spacing about them (%.3g): the same organ twice?",
+			    d[0], P->line[late == i ? j : i], d[3]);
+			warned = 1;
 		}
 	}
 	kd_free(&T);
-	return rc;
 }
 
 /* The measurement's facts for --info (the parastichies: out_info). */
@@ -349,14 +342,8 @@ measured_run(const struct model_ctx *ctx, struct result *res)
 		for (size_t i = 0; i < P.count; i++)
 			line[i] = P.line[row[i]];
 		byrow.line = line;
-		if (spacing(&byrow, (const double (*)[3])p, path, A.spacing,
-		    radius, closest, &dmin) != 0) {
-			free(line);
-			axis_free(&A);
-			free(p), free(radius), free(given), free(row), free(path);
-			points_free(&P);
-			return -1;
-		}
+		spacing(&byrow, (const double (*)[3])p, path, radius, closest,
+		    &dmin);
 		free(line);
 	}
 	ap = xcalloc(P.count, sizeof(*ap));

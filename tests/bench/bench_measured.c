@@ -1,0 +1,213 @@
+/*
+ * bench_measured.c - the measured model's order-free analysis: its
+ * success over many seeds at each distortion of measuring a real plant
+ * (the trials the note reports; test_measured.c runs a few of each),
+ * and its speed on a large head, phase by phase.
+ *
+ *	bench_measured trials [SEEDS]	a table: structure, distortion,
+ *					heads read as in order, of SEEDS
+ *	bench_measured csv N [SEED]	a photograph-like head of N florets
+ *					(jittered 15%, 5% missed), x,y CSV
+ *	bench_measured speed FILE	read FILE and measure it: seconds
+ *					a phase, best of three
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "analysis/axis.h"
+#include "analysis/parastichy.h"
+#include "analysis/unordered.h"
+#include "models/measured_csv.h"
+#include "scene/scene.h"
+#include "clock.h"
+#include "scene_text.h"
+#include "synth.h"
+
+enum { D_JITTER = 1, D_MISSING = 2, D_CENTRE = 4, D_CUT = 8, D_SQUASH = 16 };
+
+static const struct {
+	const char	*name;
+	int		 what;
+} distortions[] = {
+	{ "shuffled", 0 },
+	{ "jitter 15%", D_JITTER },
+	{ "5% missing", D_MISSING },
+	{ "centre off 10%", D_CENTRE },
+	{ "rim cut", D_CUT },
+	{ "squash 10%", D_SQUASH },
+	{ "all at once", D_JITTER | D_MISSING | D_CENTRE | D_CUT | D_SQUASH },
+};
+
+static const struct {
+	const char	*name;
+	const char	*scene;
+} structures[] = {
+	{ "Vogel head 600", "model = \"planar\"; count = 600;" },
+	{ "Vogel head 1200", "model = \"planar\"; count = 1200;" },
+	{ "Vogel head 5000", "model = \"planar\"; count = 5000;" },
+	{ "pine cone 900", "model = \"cylindrical\"; count = 900;\n"
+	    "cylindrical = { parastichies = [8, 13]; radius = \"1 - 0.6 * t * "
+	    "t\"; };" },
+	{ "collision cone", "model = \"collision\"; count = 1500;\n"
+	    "collision = { receptacle = { shape = \"cone\"; radius = 1; height "
+	    "= 1.5; }; radius = 0.05; };" },
+};
+
+/* As test_measured.c's trial(): one head, held to its organs' order. */
+static int
+trial(const struct result *r, const struct para_zone *z0, size_t nz0,
+    int what, uint64_t seed, double *dev)
+{
+	struct synth S;
+	struct unordered *U;
+	struct para_zone z[64];
+	int (*ref)[2] = calloc(r->count, sizeof(*ref));
+	uint64_t rng = seed * 0x9e3779b97f4a7c15ULL + 1;
+	double guess[2], a = 2 * M_PI * synth_uniform(&rng);
+	char why[200];
+	size_t nz;
+	int ok;
+
+	synth_init(&S, r);
+	if (what & D_JITTER)
+		synth_jitter(&S, 0.15, &rng);
+	if (what & D_MISSING)
+		synth_drop(&S, 0.05, &rng);
+	if (what & D_CUT)
+		synth_cut(&S, S.has_z ? 0.5 : 0.7, a);
+	nz = synth_order(&S, r, ref, z, 64);
+	synth_view(&S, (what & D_SQUASH) && !S.has_z ? 0.9 : 1, a + 1, &rng);
+	guess[0] = 3.25 * S.radius + 0.1 * S.radius * cos(a + 2);
+	guess[1] = -1.5 * S.radius + 0.1 * S.radius * sin(a + 2);
+	U = synth_measure(&S, (what & D_CENTRE) ? guess : NULL, !r->rim_last);
+	(void)nz;
+	ok = synth_agrees(U, S.id, (const int (*)[2])ref, z0, nz0,
+	    r->rim_last, r->divergence, 0.9, 0, why, sizeof(why));
+	*dev = isnan(U->divergence) ? NAN : remainder(U->divergence -
+	    r->divergence, 360) / U->divergence_err;
+	if (!ok && getenv("BENCH_WHY") != NULL)
+		fprintf(stderr, "seed %llu: %s\n", (unsigned long long)seed, why);
+	free(U);
+	free(ref);
+	synth_free(&S);
+	return ok;
+}
+
+static int
+trials(int seeds)
+{
+	printf("%-16s %-15s %9s %12s\n", "structure", "distortion",
+	    "as order", "div. dev/err");
+	for (size_t s = 0; s < sizeof(structures) / sizeof(*structures); s++) {
+		struct scene sc;
+		struct result r;
+		struct para_zone z[64];
+		size_t nz;
+
+		if (scene_text_run(structures[s].scene, &sc, &r) != 0)
+			return 1;
+		nz = para_zones(&r, NULL, z, 64);
+		for (size_t d = 0; d < sizeof(distortions) /
+		    sizeof(*distortions); d++) {
+			double rms = 0;
+			int good = 0, n = 0;
+
+			if ((distortions[d].what & D_SQUASH) &&
+			    distortions[d].what == D_SQUASH &&
+			    r.organs[0].pos[2] != r.organs[r.count - 1].pos[2])
+				continue;
+			for (int k = 1; k <= seeds; k++) {
+				double dev;
+
+				good += trial(&r, z, nz, distortions[d].what,
+				    (uint64_t)k, &dev);
+				if (!isnan(dev)) {
+					rms += dev * dev;
+					n++;
+				}
+			}
+			printf("%-16s %-15s %4d/%-4d %12.2f\n",
+			    structures[s].name, distortions[d].name, good,
+			    seeds, n ? sqrt(rms / n) : NAN);
+			fflush(stdout);
+		}
+		result_free(&r);
+		scene_free(&sc);
+	}
+	return 0;
+}
+
+/* A head as a photograph gives it: Vogel's, jittered, some missed. */
+static int
+csv(long n, uint64_t seed)
+{
+	double alpha = 360 * (2 - (1 + sqrt(5)) / 2) * M_PI / 180;
+	double sp = sqrt(2 * M_PI / sqrt(3));
+	uint64_t rng = seed;
+
+	printf("x,y\n");
+	for (long k = 1; k <= n; k++) {
+		double r = sqrt((double)k), a = (double)k * alpha;
+
+		if (synth_uniform(&rng) < 0.05)
+			continue;
+		printf("%.4f,%.4f\n", 1000 + r * cos(a) + 0.106 * sp *
+		    synth_gauss(&rng), 1000 + r * sin(a) + 0.106 * sp *
+		    synth_gauss(&rng));
+	}
+	return 0;
+}
+
+static int
+speed(const char *file)
+{
+	double t[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+	size_t count = 0;
+
+	for (int round = 0; round < 3; round++) {
+		struct points P;
+		struct axis A;
+		struct axis_point *ap;
+		struct unordered *U;
+		double t0 = now(), t1, t2, t3;
+
+		if (points_read(&P, file) != 0)
+			return 1;
+		t1 = now();
+		axis_find(&A, (const double (*)[3])P.p, P.count, P.has_z, NULL);
+		ap = calloc(P.count, sizeof(*ap));
+		axis_points(&A, (const double (*)[3])P.p, P.count, ap);
+		t2 = now();
+		U = unordered_measure(&A, ap, (const double (*)[3])P.p, P.count,
+		    0);
+		t3 = now();
+		t[0] = fmin(t[0], t1 - t0);
+		t[1] = fmin(t[1], t2 - t1);
+		t[2] = fmin(t[2], t3 - t2);
+		count = P.count;
+		free(U);
+		free(ap);
+		axis_free(&A);
+		points_free(&P);
+	}
+	printf("%zu points: read %.3f s, axis %.3f s, parastichies %.3f s, "
+	    "together %.3f s\n", count, t[0], t[1], t[2], t[0] + t[1] + t[2]);
+	return 0;
+}
+
+int
+main(int argc, char **argv)
+{
+	if (argc >= 2 && strcmp(argv[1], "trials") == 0)
+		return trials(argc > 2 ? atoi(argv[2]) : 100);
+	if (argc >= 3 && strcmp(argv[1], "csv") == 0)
+		return csv(atol(argv[2]), argc > 3 ? strtoull(argv[3], NULL,
+		    10) : 1);
+	if (argc >= 3 && strcmp(argv[1], "speed") == 0)
+		return speed(argv[2]);
+	fprintf(stderr, "usage: bench_measured trials [SEEDS] | csv N [SEED] "
+	    "| speed FILE\n");
+	return 2;
+}

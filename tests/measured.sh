@@ -1,0 +1,177 @@
+#!/bin/sh
+# measured.sh - the measured model through the program: the models' own
+# organs, rows shuffled, read back and measured as the models measure
+# them; the published figures it must reproduce (Vogel's spacing
+# constant, van Iterson's square and triple points); a photograph's
+# coordinates; -o never naming the points file; a large file of junk
+# refused at once.
+. tests/lib.sh
+
+# measure CFG POINTS [SETTINGS]: a measured scene reading POINTS.
+measure() {
+	printf 'model = "measured";\nmeasured = { points = "%s"; %s };\n' \
+	    "$2" "${3:-}" >"$1"
+}
+
+# shuffled: the rows of a CSV on stdin, header first, in a fixed
+# random order.
+shuffled() {
+	awk 'BEGIN { srand(7) } NR == 1 { print; next } { print rand() "\t" $0 }' |
+	    { IFS= read -r head; echo "$head"; sort -n | cut -f2-; }
+}
+
+# field KEY LABEL: a value from --info's "KEY: ...; LABEL v; ..." line.
+field() {
+	sed -n "s/^$1: .*$2 \\([^;]*\\).*/\\1/p" "$OUT/stdout"
+}
+
+# close A B TOL: |A - B| <= TOL.
+close() {
+	awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; exit !(a != "" && (d < 0 ? -d : d) <= t) }'
+}
+
+# --- Every scene's organs, shuffled, read as the model reads them. ---
+# test_measured.c holds the measurement to parastichy.c organ by organ
+# in the process; here the same through the program and a CSV file: the
+# rim's pair the model's own --info gives, where its rim zone is more
+# than a sliver (two rings, 2 n organs, which the measurement may read
+# with the zone next to it), and the contacts read the ones the file's
+# n confirms (order-agrees).  Under 60 organs is too few to read
+# without an order.
+for cfg in scenes/*.cfg; do
+	name=${cfg##*/}
+	name=${name%.cfg}
+	grep -q 'model = "measured"' "$cfg" && continue
+	px --info "$cfg" >"$OUT/$name.model" 2>/dev/null
+	[ "$(sed -n 's/^count: //p' "$OUT/$name.model")" -ge 60 ] || continue
+	px --csv "$cfg" 2>/dev/null | shuffled >"$OUT/$name.csv"
+	measure "$OUT/$name-m.cfg" "$name.csv"
+	try "scenes/$name: its organs shuffled, measured without their order, as the model reads them" px --info "$OUT/$name-m.cfg"
+	assert "exit 0" '[ $rc -eq 0 ]'
+	rim=$(sed -n 's/^parastichies: //p' "$OUT/$name.model")
+	got=$(sed -n 's/^parastichies: //p' "$OUT/stdout")
+	# The rim's zone and how many organs it holds, from the model's
+	# zones: the first or last by its rim_last (the collision, area
+	# and cylindrical models count from the base).
+	sliver=$(sed -n 's/^parastichies-along: //p' "$OUT/$name.model" | tr ';' '\n' |
+	    sed -n 's/^ *\([0-9]*\)\/\([0-9]*\) from organ \([0-9]*\).*/\1 \2 \3/p' |
+	    awk -v n="$(sed -n 's/^count: //p' "$OUT/$name.model")" -v planar="$(grep -c '^model: planar' "$OUT/$name.model")" '
+		{ m[NR] = $1; k[NR] = $2; from[NR] = $3 }
+		END {
+			if (NR == 0) { print 0; exit }
+			if (planar) size = n - from[NR]; else size = (NR > 1 ? from[2] : n) - from[1]
+			big = planar ? k[NR] : k[1]
+			print size <= 2 * big
+		}')
+	# The inhibition model's oldest organs, its angle settling, may
+	# show no clear pair (test_measured.c says why).
+	if grep -q '^model: inhibition' "$OUT/$name.model" &&
+	    echo "$got" | grep -Eq '^(none clear|transition)'; then
+		:
+	elif ! echo "$rim" | grep -q '^[0-9]'; then
+		assert "no pair at the rim, as the model says ($got)" 'echo "$got" | grep -Eq "^(none|transition)"'
+	elif [ "$sliver" = 1 ]; then
+		assert "the rim's pair one the model's analysis shows ($got)" 'grep "^parastichies-along:" $OUT/$name.model | grep -q " $(echo $got | tr " " /) "'
+	else
+		assert "the rim's pair $rim (measured: $got)" '[ "$got" = "$rim" ]'
+	fi
+	assert "the order confirms nine in ten contacts read (order-agrees)" 'close "$(sed -n "s/^order-agrees: //p" $OUT/stdout)" 1 0.1'
+	end
+done
+
+# --- Published figures. ---
+# Vogel (1979): c = 0.6242 puts the closest pair 1 apart, organs 1 and 4.
+printf 'model = "planar";\ncount = 500;\nplanar = { scale = 0.6242; };\n' >"$OUT/vogel.cfg"
+# Vogel counts from n = 1; organ 0 of the planar model sits on the axis.
+px --csv "$OUT/vogel.cfg" | awk 'NR != 2' | shuffled >"$OUT/vogel.csv"
+measure "$OUT/vogel-m.cfg" vogel.csv
+try "Vogel's c = 0.6242: the closest florets 1 apart, 1 and 4; c measured back" px --info "$OUT/vogel-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "closest pair 1.000 apart (c to four digits)" 'close "$(field closest distance)" 1 0.0001'
+assert "organs 1 and 4" 'grep -Eq "^closest: .*organ (1; organ 4|4; organ 1)$" $OUT/stdout'
+c=$(field vogel c)
+e=$(field vogel c-error)
+assert "c = $c +- $e within three errors of 0.6242" 'close "$c" 0.6242 "$(awk -v e="$e" "BEGIN { print 3 * e }")"'
+assert "divergence the golden angle" 'close "$(field divergence-measured mean)" 137.50776405 0.00005'
+end
+
+# Van Iterson on a cylinder of circumference 1 (ABOP Table 4.1 scaled by
+# 2 pi): the (3, 5, 8) triple point has h = 0.017674 and circles of
+# diameter 1/7; the square point of (5, 8) h = 1/(5^2 + 8^2) and
+# contact 1/sqrt(89).  The cylindrical model's rise is for radius 1.
+R=0.15915494309189535
+printf 'model = "cylindrical";\ncount = 600;\ndivergence = 135.918365;\ncylindrical = { radius = %s; rise = 0.111049; };\n' $R >"$OUT/triple.cfg"
+px --csv "$OUT/triple.cfg" 2>/dev/null | cut -d, -f2- | shuffled >"$OUT/triple.csv"
+measure "$OUT/triple-m.cfg" triple.csv
+try "van Iterson's (3, 5, 8) triple point: h 0.017674, contact 1/7, 135.918365 degrees" px --info "$OUT/triple-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "rise 0.017674" 'close "$(field rise mean)" 0.017674 0.0000006'
+assert "contact 1/7" 'close "$(sed -n "s/^contact: //p" $OUT/stdout)" 0.142857143 0.000001'
+assert "divergence 135.918365" 'close "$(field divergence-measured mean)" 135.918365 0.000001'
+end
+
+awk -v r=$R 'BEGIN { printf "model = \"cylindrical\";\ncount = 600;\ndivergence = %.12f;\ncylindrical = { radius = %s; rise = %.12f; };\n", 360 * 34 / 89, r, 8 * atan2(1, 1) / 89 }' >"$OUT/square.cfg"
+px --csv "$OUT/square.cfg" 2>/dev/null | cut -d, -f2- | shuffled >"$OUT/square.csv"
+measure "$OUT/square-m.cfg" square.csv
+try "van Iterson's square point of (5, 8): h 1/89, contact 1/sqrt 89, pair 5 8" px --info "$OUT/square-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "parastichies 5 8" 'grep -q "^parastichies: 5 8$" $OUT/stdout'
+assert "rise 1/89" 'close "$(field rise mean)" 0.011235955 0.0000005'
+assert "contact 1/sqrt(89)" 'close "$(sed -n "s/^contact: //p" $OUT/stdout)" 0.105999788 0.000001'
+end
+
+# --- A photograph's coordinates. ---
+# The sunflower's organs as pixels, y down, off in a corner.
+px --csv scenes/sunflower.cfg | awk -F, 'NR == 1 { print "x,y"; next } { printf "%.6f,%.6f\n", 900 + 400 * $3, 700 - 400 * $4 }' >"$OUT/pixels.csv"
+measure "$OUT/pixels-m.cfg" pixels.csv 'yaxis = "down"; outer = 1;'
+px --csv scenes/sunflower.cfg | cut -d, -f3,4 | sed '1s/.*/x,y/' >"$OUT/plain.csv"
+measure "$OUT/plain-m.cfg" plain.csv 'outer = 1;'
+try "image coordinates (y down) give the head unmirrored, centred and scaled" px --csv "$OUT/pixels-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+px --csv "$OUT/plain-m.cfg" >"$OUT/plain.out"
+assert "the same organs as the plain coordinates" 'csv_close "$OUT/plain.out" "$OUT/stdout" 1e-6'
+assert "outer 1: the farthest organ 1 from the axis" 'awk -F, "NR > 1 { r = sqrt(\$3 * \$3 + \$4 * \$4); if (r > m) m = r } END { exit !(m > 0.999999 && m < 1.000001) }" $OUT/stdout'
+end
+
+px --info "$OUT/plain-m.cfg" >"$OUT/plain.info"
+c=$(sed -n 's/^centre: x \([^;]*\); y \(.*\)/\1 \2/p' "$OUT/plain.info")
+measure "$OUT/guess-m.cfg" plain.csv "outer = 1; centre = $(echo "$c" | awk '{ printf "[%.6f, %.6f, 0.0]", $1 + 0.1, $2 - 0.05 }');"
+try "a centre guessed a tenth of the radius off: the same spirals" px --info "$OUT/guess-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+pairs() { grep "^parastichies" "$1" | sed 's/ from [^;]*//g'; }
+assert "the same pairs along" '[ "$(pairs $OUT/stdout)" = "$(pairs $OUT/plain.info)" ]'
+end
+
+# --- The points file is an input. ---
+cp "$OUT/plain.csv" "$OUT/keep.csv"
+measure "$OUT/keep-m.cfg" keep.csv
+try "-o naming the points file is a usage error, the file untouched" px --csv -o "$OUT/keep.csv" "$OUT/keep-m.cfg"
+refused "would replace .*keep.csv, the points file"
+assert "unchanged" 'cmp -s "$OUT/keep.csv" "$OUT/plain.csv"'
+end
+ln -s keep.csv "$OUT/link.csv"
+try "-o naming it by a link is refused too" px --svg -o "$OUT/link.csv" "$OUT/keep-m.cfg"
+refused "the points file (the same file by another name)"
+assert "unchanged" 'cmp -s "$OUT/keep.csv" "$OUT/plain.csv"'
+end
+try "--cfg -o naming it is refused too" px --cfg -o "$OUT/keep.csv" "$OUT/keep-m.cfg"
+refused "the points file"
+end
+
+# --- Junk. ---
+head -c 100000000 /dev/urandom >"$OUT/junk.csv" 2>/dev/null
+measure "$OUT/junk-m.cfg" junk.csv
+start=$(date +%s)
+try "100 MB of junk: refused at its first line, at once, in little memory" sh -c 'ulimit -v 200000; exec "$@"' sh $RUN "$PHYLLO" --csv "$OUT/junk-m.cfg"
+assert "exit 1" '[ $rc -eq 1 ]'
+assert "FILE:LINE" 'grep -q "junk.csv:[0-9]*: " $OUT/stderr'
+assert "in a second or two" '[ $(($(date +%s) - start)) -le 2 ]'
+assert "nothing written" '[ ! -s $OUT/stdout ]'
+end
+rm -f "$OUT/junk.csv"
+
+try "the example's SVG marks the centre it used" px --svg scenes/measured-head.cfg
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "a centre mark" 'grep -q "<title>centre</title>" $OUT/stdout'
+assert "the divergence measured, with its error" 'grep -q "divergence 137.50[0-9]* ± [0-9.]* degrees, measured" $OUT/stdout'
+end
