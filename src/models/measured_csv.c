@@ -303,8 +303,12 @@ line(struct reader *R, const char *s, size_t len)
 {
 	const char *end = s + len, *p;
 
-	if (memchr(s, '\0', len) != NULL)
-		return fail(R, "a NUL byte: this is not a text file of points");
+	/* Text has no control characters but tabs and a CRLF's CR. */
+	for (size_t i = 0; i < len; i++)
+		if (((unsigned char)s[i] < 0x20 && s[i] != '\t' &&
+		    s[i] != '\r') || s[i] == 0x7f)
+			return fail(R, "a control character (byte %d): this is "
+			    "not a text file of points", (unsigned char)s[i]);
 	if (R->line == 1 && len >= 3 && memcmp(s, "\xef\xbb\xbf", 3) == 0)
 		s += 3;		/* a spreadsheet's byte order mark */
 	for (p = s; p < end && blank(*p); p++)

@@ -300,13 +300,14 @@ load_check_applies(struct load *L)
 	int *given = (int *)((char *)sc->params + m->settings->given);
 	char why[160], what[PATH_LEN * 2];
 
-	if (sc->given[S_DIVERGENCE] && !scene_applies(sc, &scene_table,
-	    S_DIVERGENCE, why, sizeof(why))) {
-		if (unused_given(L, sc->given[S_DIVERGENCE], "divergence",
-		    why) < 0)
-			return -1;
-		sc->given[S_DIVERGENCE] = 0;
-	}
+	for (int k = S_DIVERGENCE; k <= S_COUNT; k++)
+		if (sc->given[k] && !scene_applies(sc, &scene_table, (size_t)k,
+		    why, sizeof(why))) {
+			if (unused_given(L, sc->given[k],
+			    scene_table.rows[k].name, why) < 0)
+				return -1;
+			sc->given[k] = 0;
+		}
 	for (size_t k = 0; k < m->settings->n; k++)
 		if (given[k] && !scene_applies(sc, m->settings, k, why,
 		    sizeof(why))) {
