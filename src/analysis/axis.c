@@ -246,12 +246,13 @@ head_centre(struct rings *G, double spacing, double c[2])
 		R2[nr++] = sqrt(x * x + y * y);
 	}
 	R = nr > 0 ? median(R2, nr) * 1.4 : 1;
-	G->width = 0.7 * spacing;
+	/* Rings no finer than the points can fill (an outlier far off). */
+	G->width = fmax(0.7 * spacing, 2.5 * R / (double)(4 * G->n + 16));
 	G->inner = 1.5 * spacing;
 	G->nrings = (size_t)(2.5 * R / G->width) + 2;
 	G->acc = xcalloc(3 * G->nrings, sizeof(*G->acc));
 	step = 0.3 * R / half;
-	while (step > 0.02 * spacing) {
+	while (step > 0.02 * spacing && step > 1e-9 * R) {
 		double best = -1, at[2] = { c[0], c[1] };
 
 		for (int i = -half; i <= half; i++)

@@ -749,7 +749,12 @@ static long long
 by_angle(double phi, double est, double err, double alpha, double tol)
 {
 	double best = HUGE_VAL, second = HUGE_VAL;
-	long long at = 0, k0 = llround(est);
+	long long at = 0, k0;
+
+	/* A lattice so flat no step skips a number of organs to try. */
+	if (!(fabs(est) < 1e6 && err < 1e5))
+		return 0;
+	k0 = llround(est);
 	long long w = llround(fmax(fmax(3, 4 * err), 0.12 * fabs(est)));
 
 	for (long long k = k0 - w > 1 ? k0 - w : 1; k <= k0 + w; k++) {

@@ -125,8 +125,9 @@ step_k(const struct band_lattice *L, const double l[2], double alpha,
 	}
 	from[0] = kr;
 	w[0] = have ? 2 : -1;
-	from[1] = llround(kc);
-	w[1] = llround(0.35 * fabs(kc) + 3);
+	/* A step no lattice numbers: nothing to try from its length. */
+	from[1] = fabs(kc) < 1e6 ? llround(kc) : 0;
+	w[1] = fabs(kc) < 1e6 ? llround(0.35 * fabs(kc) + 3) : -1;
 	for (int c = 0; c < 2; c++) {
 		/* t alpha - phi, a turn at a time: one wrap a step. */
 		double turn = remainder((double)(from[c] - w[c]) * alpha - phi,

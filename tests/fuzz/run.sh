@@ -1,8 +1,9 @@
 #!/bin/sh
 # run.sh SECONDS [HARNESS...] - run each fuzz harness (every
 # tests/fuzz/fuzz_*.c unless named) for SECONDS on its corpus in
-# build-fuzz/corpus/NAME, seeded from the scenes, test inputs, templates
-# and organ meshes; crashes are written to build-fuzz/crash-NAME-*.
+# build-fuzz/corpus/NAME, seeded from the scenes, test inputs, templates,
+# organ meshes and points files; crashes are written to
+# build-fuzz/crash-NAME-*.
 set -u
 t=${1:-60}
 # libconfig 1.5 leaks on one kind of syntax error: not ours.
@@ -41,6 +42,9 @@ for f in ${*:-$all}; do
 				i=$((i + 1))
 			done
 		done ;;
+	# Points files: the example, the bad cases', and our own --csv.
+	fuzz_points) cp scenes/points/*.csv tests/regress/measured/points/*.csv "$c"/
+		./phyllo-export --csv tests/regress/planar/vogel90.cfg >"$c/vogel90.csv" 2>/dev/null ;;
 	fuzz_obj) cp scenes/organs/*.obj scenes/organs/*.mtl tests/gltf/*.obj \
 		tests/gltf/*.mtl tests/regress/gltf/*.obj tests/regress/gltf/*.mtl "$c"/ ;;
 	# Names of every kind: identifiers, the materials, and the bytes
