@@ -28,9 +28,10 @@
 #include "models/model.h"
 #include "scene/compound.h"
 
-enum { MS_POINTS, MS_YAXIS, MS_CENTRE, MS_OUTER, MS__N };
+enum { MS_POINTS, MS_YAXIS, MS_CENTRE, MS_OUTER, MS_OBLIQUE, MS__N };
 
 enum { YAXIS_UP, YAXIS_DOWN };
+enum { OBLIQUE_KEEP, OBLIQUE_UNDO };
 
 struct measured {
 	struct group_at	 at;
@@ -39,11 +40,13 @@ struct measured {
 	int		 yaxis;
 	double		 centre[3];	/* a guess of where the axis is */
 	double		 outer;
+	int		 oblique;
 };
 
 #define M(f)	offsetof(struct measured, f)
 
 static const char *const yaxis_names[] = { "up", "down", NULL };
+static const char *const oblique_names[] = { "keep", "undo", NULL };
 
 static const struct row measured_rows[] = {
 	[MS_POINTS] = { .name = "points", .type = T_FILES, .off = M(points),
@@ -63,6 +66,11 @@ static const struct row measured_rows[] = {
 	  .unit = "length",
 	  .doc = "the organs' largest distance from the axis: the points are "
 	  "scaled to it" },
+	[MS_OBLIQUE] = { .name = "oblique", .type = T_CHOICE,
+	  .off = M(oblique), .words = oblique_names, .def = OBLIQUE_KEEP,
+	  .defstr = "keep",
+	  .doc = "undo: place the organs as seen square on, the view's "
+	  "squash the fit found undone" },
 };
 
 static const struct table measured_table = TABLE(measured_rows,
@@ -275,16 +283,20 @@ older_out(const struct points *P, const size_t *row,
 	return k * sns - sn * ss < 0;
 }
 
-/* The organs, centred, scaled, each framed on the fitted surface. */
+/*
+ * The organs, centred, scaled, each framed on the fitted surface; as
+ * the fit sees them (the view's squash undone) if undo, else as the
+ * file has them.
+ */
 static void
 place(struct result *res, const double (*p)[3], const struct axis *A,
     const struct axis_point *ap, const double *radius, const double *given,
-    double unit)
+    double unit, int undo)
 {
 	for (size_t i = 0; i < res->count; i++) {
 		struct organ *o = &res->organs[i];
-		double x = unit * (p[i][0] - A->centre[0]);
-		double y = unit * (p[i][1] - A->centre[1]);
+		double x = unit * (undo ? ap[i].p[0] : p[i][0] - A->centre[0]);
+		double y = unit * (undo ? ap[i].p[1] : p[i][1] - A->centre[1]);
 		double z = unit * p[i][2], rho = hypot(x, y);
 		double phi = rho > 0 ? atan2(y, x) * 180 / M_PI : 0;
 
@@ -351,12 +363,13 @@ measured_run(const struct model_ctx *ctx, struct result *res)
 	U = unordered_measure(&A, ap, (const double (*)[3])p, P.count,
 	    older_out(&P, row, ap));
 	for (size_t i = 0; i < P.count; i++)
-		far = fmax(far, hypot(p[i][0] - A.centre[0],
-		    p[i][1] - A.centre[1]));
+		far = fmax(far, M->oblique == OBLIQUE_UNDO ? ap[i].rho :
+		    hypot(p[i][0] - A.centre[0], p[i][1] - A.centre[1]));
 	if (M->given[MS_OUTER] && far > 0)
 		unit = M->outer / far;
 	result_init(res, P.count);
-	place(res, (const double (*)[3])p, &A, ap, radius, given, unit);
+	place(res, (const double (*)[3])p, &A, ap, radius, given, unit,
+	    M->oblique == OBLIQUE_UNDO);
 	res->divergence = isnan(U->divergence) ? 0 : U->divergence <= 180 ?
 	    U->divergence : 360 - U->divergence;
 	res->svg = U->surface ? PROJ_UNROLL : PROJ_TOP;

@@ -98,8 +98,8 @@ trial(const struct result *r, const struct para_zone *z0, size_t nz0,
 static int
 trials(int seeds)
 {
-	printf("%-16s %-15s %9s %12s\n", "structure", "distortion",
-	    "as order", "div. dev/err");
+	printf("%-16s %-15s %9s %16s\n", "structure", "distortion",
+	    "as order", "|div. dev|/err");
 	for (size_t s = 0; s < sizeof(structures) / sizeof(*structures); s++) {
 		struct scene sc;
 		struct result r;
@@ -111,7 +111,7 @@ trials(int seeds)
 		nz = para_zones(&r, NULL, z, 64);
 		for (size_t d = 0; d < sizeof(distortions) /
 		    sizeof(*distortions); d++) {
-			double rms = 0;
+			double *dv = calloc((size_t)seeds + 1, sizeof(*dv));
 			int good = 0, n = 0;
 
 			if ((distortions[d].what & D_SQUASH) &&
@@ -123,14 +123,21 @@ trials(int seeds)
 
 				good += trial(&r, z, nz, distortions[d].what,
 				    (uint64_t)k, &dev);
-				if (!isnan(dev)) {
-					rms += dev * dev;
-					n++;
-				}
+				if (!isnan(dev))
+					dv[n++] = fabs(dev);
 			}
-			printf("%-16s %-15s %4d/%-4d %12.2f\n",
+			/* The median: one alias in a hundred would swamp a mean. */
+			for (int i = 1; i < n; i++)
+				for (int j = i; j > 0 && dv[j] < dv[j - 1]; j--) {
+					double t = dv[j];
+
+					dv[j] = dv[j - 1];
+					dv[j - 1] = t;
+				}
+			printf("%-16s %-15s %4d/%-4d %8.2f median\n",
 			    structures[s].name, distortions[d].name, good,
-			    seeds, n ? sqrt(rms / n) : NAN);
+			    seeds, n ? dv[n / 2] : NAN);
+			free(dv);
 			fflush(stdout);
 		}
 		result_free(&r);
