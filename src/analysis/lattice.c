@@ -664,8 +664,19 @@ lattice_count(const struct field *F, struct band_lattice *L, int count_them)
 		L->ka = L->kb = 0;
 		return 0;
 	}
-	/* Every ring the counts read: where one is cut, spirals end there. */
-	whole = coverage(F, lo, hi, 4 * sqrt(dot(L->b, L->b)) / L->rho);
+	/*
+	 * Every ring the counts read, each by the organs a step about it
+	 * (together, the rings inside a rim cut by a photograph's frame
+	 * would fill its gap): where one is cut, spirals end there.
+	 */
+	whole = 1;
+	for (int c = 0; c < CUTS; c++) {
+		double w = 0.75 * fmax(est_s[0], est_s[1]);
+
+		whole = fmin(whole, coverage(F, first_at(F, cut[c] - w),
+		    first_at(F, cut[c] + w), 4 * sqrt(dot(L->b, L->b)) /
+		    L->rho));
+	}
 	memset(count, 0, sizeof(count));
 	next = xcalloc(hi - lo + 1, sizeof(*next));
 	claim = F->claim;
