@@ -238,34 +238,65 @@ synth_pair(const struct unordered *U, size_t i, int p[2])
  * the zones (the rim last or first): wherever it says a pair holds,
  * (1) the organs there have the pairs the order gives them, nine in
  * ten of those both read (share), and (2) most of them have the zone's
- * pair in the order too; (3) at the rim or base it says the order's
- * pair, or, where that is a sliver of organs it reads into the zone
- * next to it, the pair the order gives most of its rim zone's organs
- * (or, if unclear_rim, that no one pair is clear there); (4) the
- * divergence within four of its errors of alpha (degrees; NAN: any).
- * id[i]: point i's organ (NULL: the same).  Why not into why.
+ * pair in the order too; (3) at the rim or base, where the order gives
+ * two in three of the organs of the measurement's last zone one pair,
+ * it says that pair there, or the order's at the rim of the whole (or,
+ * if unclear_rim, that no one pair is clear there); where the order
+ * flickers between pairs it may say a transition; (4) it says a pair
+ * for at least cover of the organs, so that no head passes by saying
+ * transition throughout; (5) the divergence within four of its errors
+ * of alpha (degrees; NAN: any).  id[i]: point i's organ (NULL: the
+ * same).  Why not into why.
  */
 static inline int
 synth_agrees(const struct unordered *U, const size_t *id, const int (*ref)[2],
     const struct para_zone *z, size_t nz, int rim_last, double alpha,
-    double share, int unclear_rim, char *why, size_t sz)
+    double share, double cover, int unclear_rim, char *why, size_t sz)
 {
 	const struct uzone *rim = unordered_rim(U);
 	const struct para_zone *zr = NULL;
 	size_t *held = calloc(U->nzones + 1, sizeof(*held));
 	size_t *read = calloc(U->nzones + 1, sizeof(*read));
-	size_t same = 0, both = 0;
-	int ok = 1;
+	size_t *zat = calloc(U->count + 1, sizeof(*zat));
+	size_t same = 0, both = 0, paired = 0, rz = U->nzones, rread = 0;
+	int ok = 1, mode[2] = { 0, 0 }, mcount = 0;
 
 	for (size_t k = 0; k < nz && zr == NULL; k++)
 		if (z[rim_last ? nz - 1 - k : k].m > 0)
 			zr = &z[rim_last ? nz - 1 - k : k];
+	if (rim != NULL)
+		rz = (size_t)(rim - U->zone);
+	for (size_t i = 0; i < U->count; i++)
+		zat[i] = synth_zone_of(U, i);
+	/* The pair the order gives most of the rim zone's organs. */
+	for (size_t i = 0; i < U->count && rz < U->nzones; i++) {
+		size_t o = id != NULL ? id[i] : i;
+		int c = 0;
+
+		if (zat[i] != rz || ref[o][0] == 0)
+			continue;
+		rread++;
+		for (size_t j = 0; j < U->count; j++) {
+			size_t q = id != NULL ? id[j] : j;
+
+			c += zat[j] == rz && ref[q][0] == ref[o][0] &&
+			    ref[q][1] == ref[o][1];
+		}
+		if (c > mcount) {
+			mcount = c;
+			mode[0] = ref[o][0];
+			mode[1] = ref[o][1];
+		}
+	}
 	for (size_t i = 0; i < U->count; i++) {
-		size_t at = synth_zone_of(U, i), o = id != NULL ? id[i] : i;
+		size_t at = zat[i], o = id != NULL ? id[i] : i;
 		const struct uzone *u = &U->zone[at];
 		int p[2];
 
-		if (at == U->nzones || u->kind != UZ_PAIR || ref[o][0] == 0)
+		if (at == U->nzones || u->kind != UZ_PAIR)
+			continue;
+		paired++;
+		if (ref[o][0] == 0)
 			continue;
 		synth_pair(U, i, p);
 		read[at]++;
@@ -288,12 +319,17 @@ synth_agrees(const struct unordered *U, const size_t *id, const int (*ref)[2],
 			ok = 0;
 		}
 	if (ok && !(unclear_rim && rim != NULL && rim->kind != UZ_PAIR) &&
-	    (rim == NULL || rim->kind != UZ_PAIR || zr == NULL ||
-	    ((rim->m != zr->m || rim->n != zr->n) &&
-	    2 * held[U->nzones - 1] < read[U->nzones - 1]))) {
-		snprintf(why, sz, "rim %d/%d, the order's %d/%d",
-		    rim != NULL ? rim->m : 0, rim != NULL ? rim->n : 0,
-		    zr != NULL ? zr->m : 0, zr != NULL ? zr->n : 0);
+	    (rim == NULL || (3 * (size_t)mcount >= 2 * rread ? rim->kind !=
+	    UZ_PAIR || ((rim->m != mode[0] || rim->n != mode[1]) &&
+	    (zr == NULL || rim->m != zr->m || rim->n != zr->n)) : 0))) {
+		snprintf(why, sz, "rim %d/%d, the order's %d/%d (%d of %zu "
+		    "organs there)", rim != NULL ? rim->m : 0,
+		    rim != NULL ? rim->n : 0, mode[0], mode[1], mcount, rread);
+		ok = 0;
+	}
+	if (ok && (double)paired < cover * (double)U->count) {
+		snprintf(why, sz, "a pair for %zu of %zu organs", paired,
+		    U->count);
 		ok = 0;
 	}
 	if (ok && !isnan(alpha) && (isnan(U->divergence) ||
@@ -305,6 +341,7 @@ synth_agrees(const struct unordered *U, const size_t *id, const int (*ref)[2],
 	}
 	free(held);
 	free(read);
+	free(zat);
 	return ok;
 }
 
