@@ -88,6 +88,9 @@ default_text(const struct scene *sc, const struct row *r, char *buf,
 		snprintf(buf, sz, number ? "%s" : "\"%s\"", d);
 		return buf;
 	case T_VEC3:
+		/* A point found when not given (measured.centre): none. */
+		if (d[0] != '[')
+			return NULL;
 		snprintf(buf, sz, "[%.15g.0, %.15g.0, %.15g.0]", r->def,
 		    r->def, r->def);
 		return buf;
