@@ -143,20 +143,28 @@ unordered_svg_families(struct sink *s, const struct result *r,
 	free(has);
 	if (r->svg == PROJ_UNROLL || r->count == 0)
 		return;
-	/* The centre used: the axis, at the origin of a head. */
+	/*
+	 * The centre used: the axis, at the origin of a head; a cross in a
+	 * diamond (no circle nor path: those are the organs and families).
+	 */
 	sink_puts(s, "<g stroke=\"#000\" fill=\"none\" stroke-width=\"");
 	sink_num(s, width);
-	sink_puts(s, "\"><circle cx=\"0\" cy=\"0\" r=\"");
-	sink_num(s, 4 * width);
-	sink_puts(s, "\"/><path d=\"M");
-	sink_num(s, -8 * width);
-	sink_puts(s, ",0H");
-	sink_num(s, 8 * width);
-	sink_puts(s, "M0,");
-	sink_num(s, -8 * width);
-	sink_puts(s, "V");
-	sink_num(s, 8 * width);
-	sink_puts(s, "\"/><title>centre</title></g>\n");
+	sink_puts(s, "\"><title>centre</title><polygon points=\"");
+	for (int k = 0; k < 4; k++) {
+		sink_puts(s, k ? " " : "");
+		sink_num(s, k == 0 ? 4 * width : k == 2 ? -4 * width : 0);
+		sink_putc(s, ',');
+		sink_num(s, k == 1 ? 4 * width : k == 3 ? -4 * width : 0);
+	}
+	sink_puts(s, "\"/>");
+	for (int k = 0; k < 2; k++) {
+		sink_puts(s, k ? "<line x1=\"0\" y1=\"" : "<line y1=\"0\" x1=\"");
+		sink_num(s, -8 * width);
+		sink_puts(s, k ? "\" x2=\"0\" y2=\"" : "\" y2=\"0\" x2=\"");
+		sink_num(s, 8 * width);
+		sink_puts(s, "\"/>");
+	}
+	sink_puts(s, "</g>\n");
 }
 
 void
