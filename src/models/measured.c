@@ -411,6 +411,7 @@ const struct model measured_model = {
 	.settings = &measured_table,
 	.size = sizeof(struct measured),
 	.run = measured_run,
+	.count_else = "points",
 	.emerges = 1,
 	.counts_itself = 1,
 	.inputs = measured_inputs,

@@ -48,8 +48,9 @@ struct model {
 	int		 emerges;	/* the angles are found, not given: the
 					   model sets rays itself (and divergence
 					   does not apply) */
-	int		 counts_itself;	/* its organs are its input's: count
-					   does not apply */
+	int		 counts_itself;	/* its organs are its input's, which
+					   count_else names: count does
+					   not apply */
 	/*
 	 * Why row k of its table does not apply to params as given, its
 	 * other settings leaving it unused ("with inhibition.kernel

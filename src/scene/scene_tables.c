@@ -228,6 +228,11 @@ scene_applies(const struct scene *sc, const struct table *tab, size_t k,
 		snprintf(why, sz, "to model \"%s\", whose angle %s",
 		    sc->model->name, sc->model->counts_itself ? "is measured" :
 		    "emerges");
+	else if (tab == &scene_table && k == S_COUNT &&
+	    sc->model->counts_itself && sc->model->count_else != NULL)
+		snprintf(why, sz, "to model \"%s\", which reads its organs "
+		    "from %s.%s", sc->model->name, sc->model->name,
+		    sc->model->count_else);
 	else if (tab == &scene_table && k == S_COUNT && sc->model->counts_itself)
 		snprintf(why, sz, "to model \"%s\", whose organs are its "
 		    "input's", sc->model->name);
