@@ -120,6 +120,34 @@ assert "rise 1/89" 'close "$(field rise mean)" 0.011235955 0.0000005'
 assert "contact 1/sqrt(89)" 'close "$(sed -n "s/^contact: //p" $OUT/stdout)" 0.105999788 0.000001'
 end
 
+# --- Frames, as any model's. ---
+# Each organ's u, v, w right-handed and unit; on a head w is +Z and u
+# points out from the centre; on a cone w is the surface's normal,
+# pointing away from the axis, and u lies along the surface.
+px --csv scenes/pinecone.cfg | cut -d, -f3-5 | sed '1s/.*/x,y,z/' >"$OUT/cone.csv"
+printf 'model = "planar";\ncount = 500;\n' >"$OUT/flat.cfg"
+px --csv "$OUT/flat.cfg" | cut -d, -f3,4 | sed '1s/.*/x,y/' >"$OUT/flat.csv"
+measure "$OUT/cone-m.cfg" cone.csv
+measure "$OUT/flat-m.cfg" flat.csv
+frames='NR > 1 {
+	ux = $6; uy = $7; uz = $8; vx = $9; vy = $10; vz = $11; wx = $12; wy = $13; wz = $14
+	# (u x v) . w, and u . w
+	h = (uy * vz - uz * vy) * wx + (uz * vx - ux * vz) * wy + (ux * vy - uy * vx) * wz
+	if (h < 0.999999 || h > 1.000001 || (ux * wx + uy * wy + uz * wz) ^ 2 > 1e-12) bad++
+	r = sqrt($3 * $3 + $4 * $4)
+	if (r > 0 && head && (wz < 0.999999 || (ux * $3 + uy * $4) < 0.99 * r)) bad++
+	if (r > 0 && !head && (wx * $3 + wy * $4) <= 0) bad++
+	n++
+} END { exit !(n > 0 && bad == 0) }'
+try "a head's frames: w up, u out from the centre, right-handed" px --csv "$OUT/flat-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "every organ's" 'awk -F, -v head=1 "$frames" $OUT/stdout'
+end
+try "a cone's frames: w the surface's outward normal, u along it, right-handed" px --csv "$OUT/cone-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "every organ's" 'awk -F, -v head=0 "$frames" $OUT/stdout'
+end
+
 # --- A photograph's coordinates. ---
 # The sunflower's organs as pixels, y down, off in a corner.
 px --csv scenes/sunflower.cfg | awk -F, 'NR == 1 { print "x,y"; next } { printf "%.6f,%.6f\n", 900 + 400 * $3, 700 - 400 * $4 }' >"$OUT/pixels.csv"
