@@ -1076,8 +1076,8 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
 		    ((nb + COUNTED_MAX - 1) / COUNTED_MAX) == 0) != 0)
 			continue;
 		bd->lattice = 1;
-		if (bd->L.counted)
-			band_alpha(bd);
+		if (bd->L.counted && band_alpha(bd) == 0)
+			U->counted++;
 	}
 	label(B, nb);
 	local_alpha(B, nb);

@@ -61,6 +61,10 @@ struct unordered {
 	 */
 	double		 divergence, divergence_err;
 	int		 divergence_bands;
+	int		 counted;	/* bands whose spirals, counted
+					   across whole rings, agree with
+					   their turns (the others labelled
+					   by angle alone) */
 	int		 older_out;
 	/* Heads: Vogel's c (exponent 1/2) and the exponent; else NAN. */
 	double		 vogel_c, vogel_c_err, exponent, exponent_err;
