@@ -88,7 +88,16 @@ load_free_settings(const struct table *tab, void *base)
 			expr_free(((struct expr_setting *)dst)->e);
 		else if (r->type == T_POINTS)
 			free(((struct point_list *)dst)->p);
-		else if (r->type == T_GROUP)
+		else if (r->type == T_FILES) {
+			/* Emptied: scene_free() frees an entry's again. */
+			struct file_list *fl = (struct file_list *)dst;
+
+			for (size_t k = 0; k < fl->n; k++)
+				free(fl->v[k]);
+			free(fl->v);
+			fl->v = NULL;
+			fl->n = 0;
+		} else if (r->type == T_GROUP)
 			load_free_settings(r->sub, dst);
 	}
 }
