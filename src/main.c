@@ -22,10 +22,6 @@
 #include "run.h"
 #include "writers/writer.h"
 
-#ifndef SHAREDIR
-#define SHAREDIR "/usr/local/share/phyllo-export"
-#endif
-
 struct args {
 	const struct writer *writer;
 	const char	*output;	/* -o, or NULL for stdout */
@@ -233,6 +229,22 @@ bad_option(const char *arg, int opt, const struct option *longopts)
 /* Long options beyond the writers' own: output, template, arrays, ... */
 enum { OPT_WRITER = 256, NOPTIONS = 10 };
 
+/* Whether name holds a %d as --frames fills in (%03d, not %%d). */
+static int
+frame_pattern(const char *name)
+{
+	for (const char *p = name; (p = strchr(p, '%')) != NULL; p++) {
+		if (p[1] == '%') {
+			p++;
+			continue;
+		}
+		p += strspn(p + 1, "0123456789");
+		if (p[1] == 'd')
+			return 1;
+	}
+	return 0;
+}
+
 static int
 parse(int argc, char *argv[], struct args *a, struct option *longopts)
 {
@@ -356,6 +368,18 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 		    "--arrays");
 		return ST_USAGE;
 	}
+	if ((a->writer->opts & TO_BINARY) && a->output == NULL &&
+	    isatty(STDOUT_FILENO)) {
+		/* As gzip: bytes on a terminal garble it and help no one. */
+		diag(ST_USAGE, NULL, 0, 0, "--%s writes binary data, not to a "
+		    "terminal: give -o FILE or redirect standard output",
+		    a->writer->name);
+		return ST_USAGE;
+	}
+	if (!a->frames && a->output != NULL && frame_pattern(a->output))
+		diag(ST_OK, NULL, 0, 0, "-o %s: a %%d in the name is filled "
+		    "in only with --frames; writing the file as named",
+		    a->output);
 	a->scene = argv[optind];
 	if (a->frames && strcmp(a->scene, "-") == 0) {
 		diag(ST_USAGE, NULL, 0, 0, "--frames reads the scene once a "

@@ -177,12 +177,58 @@ printf 'precious\n' >"$OUT/keep.csv"
 try "-o leaves its target alone on a scene error" px --csv -o "$OUT/keep.csv" tests/regress/scene/count-negative.cfg
 assert "exit 1" '[ $rc -eq 1 ]'
 assert "target unchanged" '[ "$(cat $OUT/keep.csv)" = precious ]'
-assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.keep")" ]'
+assert "no temporary file" 'no_tmp $OUT'
 end
 
-try "-o into a missing directory is a system error" px --csv -o "$OUT/no/such/dir/x.csv" "$GOOD"
+try "-o into a missing directory says the directory does not exist" px --csv -o "$OUT/no/such/dir/x.csv" "$GOOD"
 assert "exit 3" '[ $rc -eq 3 ]'
-assert "names the file" 'grep -q "x.csv" $OUT/stderr'
+assert "says so" 'grep -qx "phyllo-export: $OUT/no/such/dir/x.csv: directory $OUT/no/such/dir does not exist" $OUT/stderr'
+end
+touch "$OUT/plain"
+try "-o under a file says it is not a directory" px --csv -o "$OUT/plain/x.csv" "$GOOD"
+assert "exit 3" '[ $rc -eq 3 ]'
+assert "says so" 'grep -qx "phyllo-export: $OUT/plain/x.csv: $OUT/plain is not a directory" $OUT/stderr'
+end
+
+# A read-only target, as an ordinary user: the shell's > and cp refuse
+# it, and so must -o's rename, which the directory alone would allow.
+# As root, the test runs the program as nobody (setpriv, util-linux).
+as_user=
+if [ "$(id -u)" -ne 0 ]; then
+	as_user=env
+elif command -v setpriv >/dev/null; then
+	as_user="setpriv --reuid=65534 --regid=65534 --clear-groups"
+fi
+if [ -n "$as_user" ] && mkdir -p "$OUT/ro" && chmod 777 "$OUT/ro" &&
+    $as_user sh -c 'echo precious >"$0/keep.inc" && chmod 444 "$0/keep.inc"' "$OUT/ro" 2>/dev/null &&
+    $as_user test -x "$PHYLLO"; then
+	try "-o refuses a read-only file, as an ordinary user" $as_user $RUN "$PHYLLO" --pov -o "$OUT/ro/keep.inc" "$GOOD"
+	assert "exit 3" '[ $rc -eq 3 ]'
+	assert "says why" 'grep -qx "phyllo-export: $OUT/ro/keep.inc: Permission denied: -o replaces only a file you may write" $OUT/stderr'
+	assert "the file is as it was, mode 444" '[ "$(cat $OUT/ro/keep.inc)" = precious ] && [ "$(stat -c %a $OUT/ro/keep.inc)" = 444 ]'
+	assert "no temporary file" '[ "$(ls -A $OUT/ro)" = keep.inc ]'
+	end
+	$as_user sh -c 'echo precious >"$0/f2.inc" && chmod 444 "$0/f2.inc"' "$OUT/ro"
+	try "--frames: a read-only frame file stops the run before any is written" $as_user $RUN "$PHYLLO" --pov --frames 3 -o "$OUT/ro/f%d.inc" "$GOOD"
+	assert "exit 3" '[ $rc -eq 3 ]'
+	assert "says which" 'grep -q "^phyllo-export: $OUT/ro/f2.inc: Permission denied" $OUT/stderr'
+	assert "nothing written" '[ "$(ls -A $OUT/ro | tr "\n" " ")" = "f2.inc keep.inc " ]'
+	end
+	ln -s keep.inc "$OUT/ro/link.inc"
+	try "-o refuses a read-only file through a link too" $as_user $RUN "$PHYLLO" --pov -o "$OUT/ro/link.inc" "$GOOD"
+	assert "exit 3, the file as it was" '[ $rc -eq 3 ] && [ "$(cat $OUT/ro/keep.inc)" = precious ]'
+	end
+else
+	skip "no ordinary user to try a read-only -o as (setpriv)"
+fi
+
+try "-o with a %d but no --frames writes the file as named, with a warning" px --csv -o "$OUT/g%d.csv" "$GOOD"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the file as named" '[ -s "$OUT/g%d.csv" ]'
+assert "warns" 'grep -qx "phyllo-export: warning: -o $OUT/g%d.csv: a %d in the name is filled in only with --frames; writing the file as named" $OUT/stderr'
+end
+try "-o with %%d (a % sign) is no pattern: no warning" px --csv -o "$OUT/g%%d.csv" "$GOOD"
+assert "exit 0, silent" '[ $rc -eq 0 ] && [ ! -s $OUT/stderr ]'
 end
 
 if [ -w /dev/full ]; then
@@ -197,6 +243,20 @@ if [ -w /dev/full ]; then
 	end
 else
 	skip "no writable /dev/full"
+fi
+
+if command -v script >/dev/null; then
+	# script(1) gives the program a terminal as standard output.
+	try "--gltf refuses a terminal as standard output, as gzip does" script -qec "$PHYLLO --gltf $GOOD; echo status \$?" /dev/null
+	assert "exit 2" 'grep -aq "^status 2" $OUT/stdout'
+	assert "says why" 'grep -aq "phyllo-export: --gltf writes binary data, not to a terminal: give -o FILE or redirect standard output" $OUT/stdout'
+	assert "no glTF bytes" '! grep -aq glTF $OUT/stdout'
+	end
+	try "text formats still go to a terminal" script -qec "$PHYLLO --csv $GOOD; echo status \$?" /dev/null
+	assert "exit 0" 'grep -aq "^status 0" $OUT/stdout'
+	end
+else
+	skip "script(1) not found: --gltf to a terminal"
 fi
 
 try "a closed stdout is a system error" sh -c '"$0" --csv "$1" >&-' "$PHYLLO" "$SUN"
@@ -268,7 +328,7 @@ for sig in TERM INT; do
 	"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
 	pid=$!
 	i=0
-	while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^\.sig')" ]; do
+	while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^sig.csv.phyllo-export-')" ]; do
 		sleep 0.05
 		i=$((i + 1))
 	done
@@ -278,9 +338,38 @@ for sig in TERM INT; do
 	assert "the temporary file had appeared" '[ $i -lt 200 ]'
 	assert "killed by the signal" '[ $rc -gt 128 ]'
 	assert "target unchanged" '[ "$(cat $OUT/sig.csv)" = precious ]'
-	assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.sig")" ]'
+	assert "no temporary file" 'no_tmp $OUT'
 	end
 done
+
+# SIGKILL cannot be caught: the temporary stays, named for what it is,
+# and the next run to the same file removes it; a running process's is
+# left alone.
+printf 'precious\n' >"$OUT/sig.csv"
+try "after SIGKILL the temporary is named for us, and the next run removes it" true
+"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
+pid=$!
+i=0
+while [ $i -lt 200 ] && [ ! -e "$OUT/sig.csv.phyllo-export-$pid.tmp" ]; do
+	sleep 0.05
+	i=$((i + 1))
+done
+kill -KILL $pid 2>/dev/null
+wait $pid 2>/dev/null
+assert "the temporary had appeared, visible, with the pid" '[ $i -lt 200 ]'
+assert "it stays after SIGKILL" '[ -e "$OUT/sig.csv.phyllo-export-$pid.tmp" ]'
+sleep 600 &
+alive=$!
+: >"$OUT/sig.csv.phyllo-export-$alive.tmp"
+: >"$OUT/other.csv.phyllo-export-$pid.tmp"
+px --csv -o "$OUT/sig.csv" "$GOOD" 2>/dev/null
+assert "the next run removed it" '[ ! -e "$OUT/sig.csv.phyllo-export-$pid.tmp" ]'
+assert "and wrote the file" 'cmp -s "$OUT/sig.csv" "$OUT/a-ref.csv"'
+assert "a running process's temporary stays" '[ -e "$OUT/sig.csv.phyllo-export-$alive.tmp" ]'
+assert "another file's stays" '[ -e "$OUT/other.csv.phyllo-export-$pid.tmp" ]'
+kill $alive 2>/dev/null
+wait $alive 2>/dev/null
+end
 
 printf 'model = "planar";\ncount = 1000000;\n' >"$OUT/million.cfg"
 try "a million organs are written in full" sh -c '"$0" --csv "$1" | wc -l' "$PHYLLO" "$OUT/million.cfg"

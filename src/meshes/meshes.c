@@ -80,7 +80,8 @@ struct named {
 
 /* Object j of part p's mesh, added to M unless its name has it. */
 static int
-add(struct meshes *M, struct named *at, const struct part *p, size_t j)
+add(struct meshes *M, struct named *at, const struct part *p, size_t j,
+    unsigned flags)
 {
 	const struct scene *sc = &p->sc;
 	const char *name = sc->objects[j];
@@ -97,10 +98,14 @@ add(struct meshes *M, struct named *at, const struct part *p, size_t j)
 	    !S_ISREG(st.st_mode) ? "not a regular file" :
 	    access(path, R_OK) != 0 ? strerror(errno) : NULL;
 	if (why != NULL) {
-		diag(ST_SCENE, sc->file, line, 0, "mesh %s of organ object "
-		    "\"%s\": %s", path, name, why);
+		/* --info wants the rest: only the glTF's size needs it. */
+		diag(flags & MESH_SIZES ? ST_OK : ST_SCENE, sc->file, line, 0,
+		    "mesh %s of organ object \"%s\": %s%s", path, name, why,
+		    flags & MESH_SIZES ? ": the glTF's size is not estimated" :
+		    "");
 		free(path);
-		return -1;
+		M->missing = 1;
+		return flags & MESH_SIZES ? 0 : -1;
 	}
 	for (i = 0; i < M->n; i++)
 		if (strcmp(M->m[i].name, name) == 0)
@@ -170,13 +175,13 @@ warn_bare(const struct meshes *M, const struct compound *C)
 }
 
 int
-meshes_load(struct meshes *M, struct compound *C, int warn)
+meshes_load(struct meshes *M, struct compound *C, unsigned flags)
 {
 	struct named *at;
 	size_t most = 0;
 	int rc = 0;
 
-	*M = (struct meshes){ NULL, 0 };
+	*M = (struct meshes){ NULL, 0, 0 };
 	for (size_t i = 0; i < C->n; i++)
 		most += C->parts[i]->sc.nobjects;
 	M->m = xcalloc(most, sizeof(*M->m));
@@ -186,14 +191,14 @@ meshes_load(struct meshes *M, struct compound *C, int warn)
 
 		for (size_t j = 0; j < sc->nobjects && rc == 0; j++)
 			if (sc->object_mesh[j] != NULL)
-				rc = add(M, at, C->parts[i], j);
+				rc = add(M, at, C->parts[i], j, flags);
 	}
 	for (size_t i = 0; i < M->n; i++)
 		free(at[i].file);
 	free(at);
 	if (rc != 0)
 		return -1;
-	if (warn)
+	if (flags & MESH_WARN)
 		warn_bare(M, C);
 	for (size_t i = 0; i < C->n; i++)
 		C->parts[i]->res.meshes = M;
@@ -213,7 +218,7 @@ void
 meshes_free(struct meshes *M)
 {
 	free(M->m);
-	*M = (struct meshes){ NULL, 0 };
+	*M = (struct meshes){ NULL, 0, 0 };
 }
 
 void
@@ -233,6 +238,7 @@ meshes_inputs(const struct compound *C)
 			snprintf(what, sizeof(what), "the mesh of organ object "
 			    "\"%s\"", p->sc.objects[j]);
 			output_input(path, what);
+			obj_libraries(path, library_read);
 			free(path);
 		}
 	}

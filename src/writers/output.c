@@ -7,6 +7,11 @@
  * Devices and pipes named with -o (/dev/stdout, /dev/full) are written
  * directly.
  *
+ * The temporary is named for what it is, FILE.phyllo-export-PID.tmp,
+ * not hidden: a run killed by SIGKILL (or a power cut) cannot remove it,
+ * and a user who finds it must see whose it is.  The next run to the
+ * same FILE removes those of processes that no longer run.
+ *
  * Temporary files are removed on error, on exit() from anywhere (out
  * of memory) and on SIGINT, SIGTERM, SIGHUP and SIGPIPE.  SIGXFSZ is
  * ignored, so that a file size limit (ulimit -f) is a write error with
@@ -14,8 +19,11 @@
  *
  * -o never names a file the run reads: the scene, a part's scene, the
  * template (output_input() lists them), so that a slip of the keyboard
- * (phyllo-export --pov -o my.cfg my.cfg) cannot destroy a scene.
+ * (phyllo-export --pov -o my.cfg my.cfg) cannot destroy a scene.  Nor
+ * one the user may not write: a rename would replace a read-only file
+ * that the shell's > and cp refuse to touch.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -125,6 +133,11 @@ output_check(const char *path)
 			    " (the same file by another name)" : "");
 			return -1;
 		}
+	if (S_ISREG(st.st_mode) && access(path, W_OK) != 0) {
+		diag(ST_SYSTEM, path, 0, 0, "%s: -o replaces only a file you may "
+		    "write", strerror(errno));
+		return -1;
+	}
 	return 0;
 }
 
@@ -164,6 +177,103 @@ toolong:
 	return -1;
 }
 
+/* The temporary of target written by process pid. */
+#define TMP_TAG	".phyllo-export-"
+#define TMP_END	".tmp"
+
+static int
+tmp_name(char *buf, size_t sz, const char *target, long pid)
+{
+	return snprintf(buf, sz, "%s" TMP_TAG "%ld" TMP_END, target, pid) >=
+	    (int)sz ? -1 : 0;
+}
+
+/* Whether process pid may still run (it, or one of that number). */
+static int
+running(long pid)
+{
+	return kill((pid_t)pid, 0) == 0 || errno != ESRCH;
+}
+
+/*
+ * Remove the temporaries of target that runs killed before they could
+ * (SIGKILL, a crash of the machine) left: ours by their name, stale by
+ * their process.
+ */
+static void
+remove_stale(const char *target, int dirlen)
+{
+	const char *base = target + dirlen;
+	size_t blen = strlen(base);
+	char dir[PATH_MAX], stale[PATH_MAX];
+	struct dirent *e;
+	DIR *d;
+
+	if (snprintf(dir, sizeof(dir), "%.*s", dirlen ? dirlen : 1,
+	    dirlen ? target : ".") >= (int)sizeof(dir) ||
+	    (d = opendir(dir)) == NULL)
+		return;
+	while ((e = readdir(d)) != NULL) {
+		const char *p = e->d_name;
+		char *end;
+		long pid;
+
+		if (strncmp(p, base, blen) != 0 ||
+		    strncmp(p += blen, TMP_TAG, strlen(TMP_TAG)) != 0)
+			continue;
+		p += strlen(TMP_TAG);
+		if (*p < '1' || *p > '9')
+			continue;
+		pid = strtol(p, &end, 10);
+		if (strcmp(end, TMP_END) != 0 || pid == (long)getpid() ||
+		    running(pid) ||
+		    tmp_name(stale, sizeof(stale), target, pid) != 0)
+			continue;
+		unlink(stale);
+	}
+	closedir(d);
+}
+
+/*
+ * Create target's temporary, 0600 and only ours; its name in buf.  The
+ * descriptor, -2 for a name too long, or -1 with errno.  One of our own
+ * number exists only if a process of that number before us left it.
+ */
+static int
+create_tmp(char *buf, size_t sz, const char *target)
+{
+	int fd;
+
+	if (tmp_name(buf, sz, target, (long)getpid()) != 0)
+		return -2;
+	fd = open(buf, O_WRONLY | O_CREAT | O_EXCL, 0600);
+	if (fd < 0 && errno == EEXIST && unlink(buf) == 0)
+		fd = open(buf, O_WRONLY | O_CREAT | O_EXCL, 0600);
+	return fd;
+}
+
+/* Why no file can be made beside target, after create_tmp() failed. */
+static const char *
+dir_problem(const char *target, int dirlen)
+{
+	static char why[PATH_MAX + 64];
+	int err = errno;
+
+	if (dirlen == 0)
+		snprintf(why, sizeof(why), "cannot create a file in the "
+		    "current directory: %s", strerror(err));
+	else if (err == ENOENT)
+		snprintf(why, sizeof(why), "directory %.*s does not exist",
+		    dirlen > 1 ? dirlen - 1 : dirlen, target);
+	else if (err == ENOTDIR)
+		snprintf(why, sizeof(why), "%.*s is not a directory",
+		    dirlen > 1 ? dirlen - 1 : dirlen, target);
+	else
+		snprintf(why, sizeof(why), "cannot create a file in %.*s: %s",
+		    dirlen, target, strerror(err));
+	return why;
+}
+
 FILE *
 output_open(const char *path)
 {
@@ -199,20 +309,18 @@ output_open(const char *path)
 	p = &pend[npend];
 	slash = strrchr(target, '/');
 	dirlen = slash != NULL ? (int)(slash - target + 1) : 0;
-	if (snprintf(p->tmp, sizeof(p->tmp), "%.*s.%s.XXXXXX", dirlen, target,
-	    target + dirlen) >= (int)sizeof(p->tmp)) {
-		diag(ST_SYSTEM, path, 0, 0, "file name too long");
-		return NULL;
-	}
-	if ((fd = mkstemp(p->tmp)) < 0) {
-		diag(ST_SYSTEM, path, 0, 0, "cannot create a file beside "
-		    "it: %s", strerror(errno));
+	remove_stale(target, dirlen);
+	if ((fd = create_tmp(p->tmp, sizeof(p->tmp), target)) < 0) {
+		if (fd == -2)
+			diag(ST_SYSTEM, path, 0, 0, "file name too long");
+		else
+			diag(ST_SYSTEM, path, 0, 0, "%s", dir_problem(target, dirlen));
 		return NULL;
 	}
 	p->target = xstrdup(target);
 	npend++;
 	/*
-	 * mkstemp makes 0600: give an existing file's own mode and owner
+	 * The temporary is 0600: give an existing file's own mode and owner
 	 * (the owner only where we may), else what a plain create would.
 	 */
 	if (had) {

@@ -36,7 +36,9 @@
 #include "diag.h"
 #include "result/flatten.h"
 #include "mem.h"
+#include "phyllo.h"
 #include "scene/suggest.h"
+#include "writers/output.h"
 #include "writers/template.h"
 
 
@@ -353,6 +355,20 @@ tmpl_builtin(const char *name, const struct tmpl_var *extra)
 		}
 	diag(ST_SYSTEM, NULL, 0, 0, "no built-in template %s", name);
 	return NULL;
+}
+
+void
+tmpl_shipped_inputs(void)
+{
+	char path[4096];
+
+	for (const struct builtin_template *b = builtin_templates;
+	    b->name != NULL; b++) {
+		snprintf(path, sizeof(path), "%s/%s", SHAREDIR, b->name);
+		output_input(path, "a template phyllo-export installs");
+		output_input(b->source, "a template phyllo-export is built "
+		    "from");
+	}
 }
 
 static void	write_run(const struct tmpl *, size_t from, size_t to,
