@@ -272,6 +272,31 @@ assert "message" 'grep -qx "phyllo-export: $OUT/nul.cfg:3: NUL byte in scene fil
 assert "stdout empty" '[ ! -s $OUT/stdout ]'
 end
 
+# What editors write: no newline after a last-line comment, and (on
+# Windows) a UTF-8 byte-order mark.  libconfig 1.5 calls both a syntax
+# error; they are the same scene as without them.
+printf 'model = "planar";\ncount = 100;\n' >"$OUT/plain.cfg"
+px --csv "$OUT/plain.cfg" >"$OUT/plain.csv"
+printf 'model = "planar";\ncount = 100; # organs' >"$OUT/nonl.cfg"
+printf 'model = "planar";\ncount = 100; // organs' >"$OUT/nonl2.cfg"
+printf '\357\273\277model = "planar";\ncount = 100;\n' >"$OUT/bom.cfg"
+for f in nonl nonl2 bom; do
+	try "$f.cfg: read as the same scene" px --csv "$OUT/$f.cfg"
+	assert "exit 0, the same organs" '[ $rc -eq 0 ] && cmp -s $OUT/stdout $OUT/plain.csv'
+	end
+done
+printf '\357\273\277model = "planar";\ncount = 100;\nname = 3;\n' >"$OUT/bom-bad.cfg"
+try "an error after a byte-order mark keeps its line" px --csv "$OUT/bom-bad.cfg"
+assert "exit 1, line 3" '[ $rc -eq 1 ] && grep -q "^phyllo-export: $OUT/bom-bad.cfg:3: " $OUT/stderr'
+end
+try "--cfg keeps the byte-order mark and sets what the file has" px --cfg --set count=50 --set divergence=137 "$OUT/bom.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the mark kept, count set in place, divergence added" '[ "$(od -An -c -N3 $OUT/stdout | tr -d " ")" = "357273277" ] && [ "$(sed -n 2p $OUT/stdout)" = "count = 50;" ] && [ "$(sed -n 3p $OUT/stdout)" = "divergence = 137;" ]'
+end
+try "--cfg after a last-line comment without a newline: on a line of its own" px --cfg --set divergence=137 "$OUT/nonl.cfg"
+assert "exit 0, the comment kept, the setting after it" '[ $rc -eq 0 ] && [ "$(sed -n 2p $OUT/stdout)" = "count = 100; # organs" ] && [ "$(sed -n 3p $OUT/stdout)" = "divergence = 137;" ]'
+end
+
 head -c 4096 "$PHYLLO" | tr -d '\000' >"$OUT/garbage.cfg"
 try "binary garbage is a clean error" px --csv "$OUT/garbage.cfg"
 assert "exit 1" '[ $rc -eq 1 ]'

@@ -7,6 +7,9 @@
  * (count = 20000000000 arrives as -1474836480).  We reject NULs with
  * their line, and append the L suffix to every integer literal that does
  * not fit in 32 bits, so the range checks see the number as written.
+ * And it calls a file whose last line is a comment without a newline,
+ * or one that starts with a UTF-8 byte-order mark (as Windows editors
+ * write), a syntax error: the mark is left out and a newline added.
  * Line numbers are unchanged.
  */
 #include <ctype.h>
@@ -79,7 +82,7 @@ char *
 cfgtext_prepare(const char *text, size_t len, int *nul_line)
 {
 	const char *p = text, *end = text + len;
-	char *out = xmalloc(len + len / 2 + 2), *o = out;
+	char *out = xmalloc(len + len / 2 + 3), *o = out;
 	int line = 1;
 
 	*nul_line = 0;
@@ -91,6 +94,8 @@ cfgtext_prepare(const char *text, size_t len, int *nul_line)
 		}
 		line += *q == '\n';
 	}
+	if (len >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+		p += 3;
 	while (p < end) {
 		size_t n = skip_inert(p, end);
 
@@ -127,6 +132,8 @@ cfgtext_prepare(const char *text, size_t len, int *nul_line)
 		}
 		*o++ = *p++;
 	}
+	if (o > out && o[-1] != '\n')
+		*o++ = '\n';
 	*o = '\0';
 	return out;
 }
@@ -580,6 +587,9 @@ cfgtext_splice(const char *text, size_t len, const char *path,
 	const char *from = text, *to = text + len, *end = text + len, *dot;
 	char name[128];
 	int top = 1;
+
+	if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0)
+		from += 3;	/* a byte-order mark, kept */
 
 	for (const char *c = path; ; c = dot + 1) {
 		struct member m, last;
