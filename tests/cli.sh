@@ -447,6 +447,29 @@ try "--info: the inhibition model's settled line names its mean and spread" px -
 assert "settled: mean M; spread S" 'grep -Eq "^settled: mean [0-9.e+-]+; spread [0-9.e+-]+$" $OUT/stdout'
 assert "regime: fibonacci" 'grep -qx "regime: fibonacci" $OUT/stdout'
 end
+# The pair at the meristem, against the lattice the growth makes: on
+# log-polar coordinates (angle in radians, ln r), which keep angles,
+# primordium k plastochrons older sits k*divergence round and k*G out,
+# and the contact pair is the shortest step turning each way.
+for G in 0.02 0.01 0.002; do
+	printf 'model = "inhibition";\ncount = 800;\ninhibition = { growth = %s; radii = "grown"; };\n' $G >"$OUT/inh-g.cfg"
+	try "--info: the pair at the meristem at G = $G is the log-polar lattice's" px --info "$OUT/inh-g.cfg"
+	want=$(awk -v G=$G '/^settled:/ { d = $3 + 0 }
+		END {
+			for (k = 1; k <= 400; k++) {
+				t = k * d / 360; f = t - int(t + 0.5)
+				x = 2 * 3.14159265358979 * f; y = k * G; l = x * x + y * y
+				if (f > 0 && (!p || l < lp)) { p = k; lp = l }
+				if (f < 0 && (!m || l < lm)) { m = k; lm = l }
+			}
+			print (p < m ? p " " m : m " " p)
+		}' "$OUT/stdout")
+	assert "parastichies-meristem: $want" 'grep -qx "parastichies-meristem: $want" $OUT/stdout'
+	end
+done
+try "--info: alternate leaves have no pair at the meristem" px --info scenes/distichous.cfg
+assert "parastichies-meristem: none" 'grep -qx "parastichies-meristem: none" $OUT/stdout'
+end
 try "the golden angle makes no rays" px --info "$SUN"
 assert "no rays line, no warning" '! grep -q "^rays:" $OUT/stdout && [ ! -s $OUT/stderr ]'
 end

@@ -648,6 +648,12 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 	result_info_labelled(res, "settled", "mean spread", 2, mean, spread);
 	meristem_pair(F.phi, F.S, N, F.near, &pm, &pn);
 	result_info_text(res, "regime", regime(N, mean, spread, pm, pn));
+	/* The pair the growth reached, which the layout may not show. */
+	if (pm > 0)
+		result_info(res, "parastichies-meristem", 2, (double)pm,
+		    (double)pn);
+	else
+		result_info_text(res, "parastichies-meristem", "none");
 	result_info(res, "terms", 1, (double)terms);
 	if (F.check)
 		result_info(res, "bound misses", 1, (double)F.misses);
