@@ -135,10 +135,11 @@ sample_circle(void *ctx, const struct organ *o, double weight)
 	circle(s, o->pos[0], o->pos[1], o);
 	/*
 	 * An organ ends a step of each of its two families at most: a
-	 * Bezier each, three points of two numbers.
+	 * Bezier each, three points of two numbers, and a chain's start
+	 * (a point more) each, a family's single steps being chains.
 	 */
-	for (int k = 0; k < 2 * 3; k++) {
-		sink_putc(s, k % 3 == 0 ? 'C' : ' ');
+	for (int k = 0; k < 2 * 4; k++) {
+		sink_putc(s, k % 4 == 0 ? 'C' : ' ');
 		sink_num(s, o->pos[0]);
 		sink_putc(s, ',');
 		sink_num(s, o->pos[1]);
