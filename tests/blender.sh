@@ -47,6 +47,9 @@ cp -r tests/regress/compound/tree.cfg tests/regress/compound/mid.cfg tests/regre
 px --blender -o "$OUT/tree.py" "$OUT/tree.cfg"
 px --csv --flatten -o "$OUT/tree.csv" "$OUT/tree.cfg"
 px --blender --frames 3 -o "$OUT/grow.py" "$OUT/tree.cfg"
+# The README's growth, re-run in one session with another count of frames.
+px --blender --frames 24 -o "$OUT/stages24.py" scenes/stages.cfg
+px --blender --frames 4 -o "$OUT/stages4.py" scenes/stages.cfg
 # One scene of every model, for the whole frame of every organ: a
 # cylinder's organs point u along the axis (Euler's gimbal lock), a
 # sphere's face every way.
@@ -102,6 +105,11 @@ assert objects == [("Seed", 100), ("Bract", 50), ("Petal", 50)], objects
 ' "$OUT/head.py"
 assert "parses, STRUCTURES is a literal" '[ $rc -eq 0 ]'
 end
+
+# Python for --python-expr after a 3-frame script: a check line on the
+# timeline, which the script sets to the growth's frames.
+TIMELINE='import bpy; s = bpy.context.scene
+print("check: %s the timeline is the 3 frames of the growth (%d..%d)" % ("ok" if (s.frame_start, s.frame_end) == (1, 3) else "FAILED", s.frame_start, s.frame_end))'
 
 # checked NAME MIN: after a check.py run, keep its log as NAME.log and
 # assert Blender succeeded with no check failed and at least MIN passed.
@@ -186,12 +194,21 @@ for b in $BLENDERS; do
 	done
 
 	for f in 1 3; do
-		try "$V: --frames 3, one script: at frame $f the leaves of frame $f alone, where its --flatten puts them" \
+		try "$V: --frames 3, one script: at frame $f the leaves of frame $f alone, where its --flatten puts them; the timeline ends at frame 3" \
 			blend "$D/artist.blend" --python "$OUT/grow.py" --python "$OUT/grow.py" \
+			--python-expr "$TIMELINE" \
 			--python tests/blender/check.py -- "$OUT/grow$f.csv" Tree leaves "$f"
-		checked grow$f 6
+		checked grow$f 7
 		end
 	done
+
+	try "$V: scripts re-run in one session (24 frames, 4, 24 again; a compound's frames; instances, linked duplicates, instances): nothing orphaned, each re-run leaves the .blend as the last run of it did" \
+		blend "$D/artist.blend" --python tests/blender/sequence.py -- \
+		"$OUT/stages24.py" "$OUT/stages4.py" "$OUT/stages24.py" \
+		"$OUT/grow.py" "$OUT/grow.py" \
+		"$OUT/head.py" "$OUT/head-obj.py" "$OUT/head.py"
+	checked sequence 11
+	end
 
 	# Every example scene, in one Blender process.
 	blend --factory-startup --python tests/blender/run_all.py -- "$OUT"/scene-*.py
