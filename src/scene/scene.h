@@ -98,6 +98,8 @@ struct written {
 	char		*text;		/* its value in scene-file syntax */
 	int		 line;		/* where: a line, or an override's
 					   (DIAG_LINE_SET + k) */
+	int		 dropped;	/* given by the file, left unused by a
+					   --set: --cfg takes it out */
 };
 
 extern const struct table scene_table;
