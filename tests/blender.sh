@@ -63,6 +63,21 @@ for s in $POSES; do
 done
 px --csv --flatten --frames 3 -o "$OUT/grow%d.csv" "$OUT/tree.cfg"
 printf 'model = "planar";\ncount = 0;\n' >"$OUT/bad-addon.cfg"
+printf 'model = "planar";\ncount = "100 - 200 * f";\n' >"$OUT/bad-grow.cfg"
+# What the add-on imports, each in every Blender: every example scene,
+# with 4 frames where it reads f or F (its frames differ), and one with
+# a seed wider than Blender's integer fields and numbers as strings.
+printf 'model = "planar";\ncount = 30;\nseed = 4000000000L;\nplanar = { scale = "0.1"; };\norgans = ( { object = "Seed"; tilt = "15"; } );\n' >"$OUT/edge.cfg"
+IMPORTS="$(pwd)/$OUT/edge.cfg"
+for cfg in scenes/*.cfg; do
+	b=$(basename "$cfg" .cfg)
+	px --csv --flatten --frames 2 -o "$OUT/frames-$b-%d.csv" "$cfg"
+	if cmp -s "$OUT/frames-$b-1.csv" "$OUT/frames-$b-2.csv"; then
+		IMPORTS="$IMPORTS $(pwd)/$cfg"
+	else
+		IMPORTS="$IMPORTS $(pwd)/$cfg:4"
+	fi
+done
 # The panel's scene, and --csv of what its changes should build.
 cat >"$OUT/panel.cfg" <<'CFG'
 # A head for the panel's test: its comments must survive a save.
@@ -87,8 +102,25 @@ printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "gaussian"; 
 px --csv -o "$OUT/inh.csv" "$OUT/inh.cfg"
 px --csv --set 'inhibition.kernel="power"' -o "$OUT/inh-power.csv" "$OUT/inh.cfg"
 px --csv --set 'inhibition.kernel="power"' --set inhibition.exponent=2 -o "$OUT/inh-exp2.csv" "$OUT/inh.cfg"
-# The power law's with its exponent in the file: the Gaussian from the menu.
-printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "power"; exponent = 3; growth = 0.1; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/inh-file-exp.cfg"
+# The power law's with its exponent in the file: the Gaussian from the
+# menu, and Save, which takes the exponent out (a copy per Blender).
+cat >"$OUT/inh-file-exp.cfg" <<'CFG'
+# The power law's kernel, its exponent given.
+model = "inhibition";
+count = 60;
+inhibition = {
+  kernel = "power";
+  # its exponent
+  exponent = 3;
+  growth = 0.1;
+};
+organs = ( { object = "Seed"; } );
+CFG
+# Numbers as typed in the panel.
+px --csv --set planar.scale=0.0437 --set divergence=137.36 -o "$OUT/exact.csv" "$OUT/panel.cfg"
+# A part's setting changed, as the leaves show it.
+px --csv --flatten --set Achene:count=15 -o "$OUT/gb15.csv" scenes/goatsbeard.cfg
+cp scenes/stages.cfg "$OUT/stages.cfg"
 ADDON_ZIP=$TESTBIN/phyllo_import.zip
 # Statically linked: it runs inside the roots, whose libconfig differs.
 ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
@@ -137,6 +169,13 @@ for b in $BLENDERS; do
 	panel() (
 		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
 		blend --factory-startup --python tests/blender/panel.py -- "$@"
+	)
+	# addon_script NAME ARGS...: tests/blender/NAME the same way.
+	addon_script() (
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
+		s=$1
+		shift
+		blend --factory-startup --python "tests/blender/$s" -- "$@"
 	)
 
 	try "$V: make the artist's .blend (saved, then reopened)" \
@@ -226,18 +265,28 @@ for b in $BLENDERS; do
 	# The add-on, installed into a user folder of its own.
 	if [ -f "$ADDON_ZIP" ] && [ -x "$ADDON_PROG" ]; then
 		rm -rf "$D/user"
-		try "$V: the import add-on installs, imports, re-imports and reports a bad scene" \
+		try "$V: the import add-on installs, imports, re-imports, and reports a bad scene, and one bad at its last frame, changing nothing" \
 			addon "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
-			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:"
+			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" \
+			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3"
 		cp "$OUT/blender.log" "$D/addon.log"
 		assert "Blender exit 0" '[ $rc -eq 0 ]'
-		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 6 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 7 ]'
 		end
 		rm -rf "$D/user"
-		cp "$OUT/panel.cfg" "$D/panel.cfg"
-		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value, save to the scene file, frames" \
+		# shellcheck disable=SC2086
+		try "$V: the import add-on on every example scene (frames where it reads f): the panel lists every setting of --settings, as the file has it; imported again, nothing orphaned, the .blend as before" \
+			addon_script import_all.py "$(pwd)/$ADDON_ZIP" "$ADDON_PROG" $IMPORTS
+		checked import_all $(( $(echo $IMPORTS | wc -w) * 5 ))
+		end
+		rm -rf "$D/user" "$D/gb"
+		cp "$OUT/panel.cfg" "$OUT/inh-file-exp.cfg" "$D/"
+		mkdir -p "$D/gb/parts"
+		cp scenes/goatsbeard.cfg "$D/gb/"
+		cp scenes/parts/goatsbeard-pappus.cfg "$D/gb/parts/"
+		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value and its message wrapped, save to the scene file, numbers as typed, a setting taken out, a part's setting, frames" \
 			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
-		checked panel 29
+		checked panel 47
 		end
 	else
 		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"
