@@ -195,17 +195,25 @@ check("--set count=0: count 0 is out of range" in st.error,
 changes = state.differences(before, state.snapshot())
 check(positions() == built and not changes,
       "and the structure and .blend as they were (%s)" % changes)
-# The message whole, on lines that fit the sidebar (Blender cuts a label
-# too wide for it in the middle), at its narrowest and at double scale.
-for width, scale in ((220, 1.0), (300, 1.0), (220, 2.0)):
-    labels, wide = at_width(width, scale)
-    lines = [text for text, icon, in_row in labels
-             if icon in ("ERROR", "BLANK1")]
-    check(not wide and "".join(lines).replace(" ", "") ==
-          st.error.replace(" ", ""),
-          "in a sidebar %d pixels wide at scale %g: the message whole, "
-          "in %d lines that fit (too wide: %s)"
-          % (width, scale, len(lines), wide))
+
+
+def wrapped_whole(what):
+    """The message whole, on lines that fit the sidebar (Blender cuts a
+    label too wide for it in the middle), at its narrowest and at double
+    scale."""
+    error = bpy.context.scene.phyllo_structure.phyllo.error
+    for width, scale in ((220, 1.0), (300, 1.0), (220, 2.0)):
+        labels, wide = at_width(width, scale)
+        lines = [text for text, icon, in_row in labels
+                 if icon in ("ERROR", "BLANK1")]
+        check(error and not wide and "".join(lines).replace(" ", "") ==
+              error.replace(" ", ""),
+              "%s, in a sidebar %d pixels wide at scale %g: the message "
+              "whole, in %d lines that fit (too wide: %s)"
+              % (what, width, scale, len(lines), wide))
+
+
+wrapped_whole("count 0")
 try:
     bpy.ops.phyllo.update()
     report = ""
@@ -216,6 +224,12 @@ check("--set count=0: count 0 is out of range" in report,
 setting("count").integer = 300
 check(not st.error and same(positions(), from_csv("scale.csv")),
       "a good value again clears the message and rebuilds")
+# An expression written without spaces, wider than a line by itself.
+setting("organs.1.tilt").text = "20*rand(1)*smoothstep(0,0.6,t)*unknown"
+wrapped_whole("an unknown variable in a long expression")
+setting("organs.1.tilt").text = "20 * rand(1)"
+check(not st.error and same(positions(), from_csv("scale.csv")),
+      "the expression as it was: no message, the structure as before")
 
 text_before = open(scene).read()
 bpy.ops.phyllo.save()
