@@ -556,10 +556,12 @@ def group_of(path):
 # --- Labels wrapped to the sidebar's width. ---
 
 # What a label in a box of the sidebar does not have of the region's
-# width, in pixels at scale 1: the panel's and the box's margins, and
-# room for the scroll bar.
-LABEL_MARGIN = 44
-ICON = 20           # a label's icon, at scale 1
+# width, in pixels at scale 1: the column of tabs, the panel's and the
+# box's margins and the label's own.  Measured on a screenshot of
+# Blender 3.4 (a 229-pixel region at scale 1.04 leaves 162 pixels of
+# text, 136 beside an icon), with a few to spare.
+LABEL_MARGIN = 72
+ICON = 28           # a label's icon and its gap, at scale 1
 
 
 def ui_scale(context):
@@ -627,12 +629,13 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
             box.alert = True
             for i, line in enumerate(wrapped(context, st.error, True)):
                 box.label(text=line, icon="ERROR" if i == 0 else "BLANK1")
-        row = layout.row()
+        # Update, with the last run's time, the wider: in half the
+        # sidebar's width it was cut short.
+        row = layout.split(factor=0.35)
         row.prop(st, "live")
         sub = row.row()
         sub.enabled = st.stale or bool(st.error)
-        sub.operator("phyllo.update", text="Update (last %.2f s)"
-                     % st.seconds)
+        sub.operator("phyllo.update", text="Update (%.2f s)" % st.seconds)
         last = next((s for s in st.settings if s.path == st.last), None)
         if last is not None:
             # The setting changed last, whole: what the rows leave out.

@@ -123,9 +123,11 @@ def drawn(width):
 def at_width(width, scale):
     """The labels the panel draws in a sidebar width pixels wide at UI
     scale, and those of them, out of its settings' rows, that do not fit:
-    what Blender would cut in the middle.  A label has the width less
-    the panel's and the box's margins (some 40 pixels at scale 1), and
-    an icon 20 more."""
+    what Blender would cut short.  A label has the width less the tabs',
+    the panel's, the box's and its own margins, 64 pixels at scale 1,
+    and beside an icon 25 more (a screenshot of Blender 3.4: a sidebar
+    229 pixels wide at scale 1.04 shows 162 pixels of text, 136 beside
+    an icon)."""
     view = bpy.context.preferences.view
     old, view.ui_scale = view.ui_scale, scale
     try:
@@ -135,7 +137,7 @@ def at_width(width, scale):
         return labels, [
             text for text, icon, in_row in labels
             if not in_row and blf.dimensions(0, text)[0] >
-            (width - 40 - 20 * (icon != "NONE")) * scale]
+            (width - 64 - 25 * (icon != "NONE")) * scale]
     finally:
         view.ui_scale = old
 
@@ -204,8 +206,13 @@ def wrapped_whole(what):
     error = bpy.context.scene.phyllo_structure.phyllo.error
     for width, scale in ((220, 1.0), (300, 1.0), (220, 2.0)):
         labels, wide = at_width(width, scale)
-        lines = [text for text, icon, in_row in labels
-                 if icon in ("ERROR", "BLANK1")]
+        # The message's: the ERROR label and the BLANK1 ones after it.
+        icons = [icon for text, icon, in_row in labels]
+        first = icons.index("ERROR") if "ERROR" in icons else len(icons)
+        last = first + 1
+        while last < len(icons) and icons[last] == "BLANK1":
+            last += 1
+        lines = [text for text, icon, in_row in labels[first:last]]
         check(error and not wide and "".join(lines).replace(" ", "") ==
               error.replace(" ", ""),
               "%s, in a sidebar %d pixels wide at scale %g: the message "
