@@ -254,8 +254,8 @@ def interval(s):
     if lo is None and hi is None:
         return ""
     return "%s%s, %s]" % ("(" if s.get("min_open") or lo is None else "[",
-                          "-inf" if lo is None else "%g" % lo,
-                          "inf" if hi is None else "%g" % hi)
+                          "-inf" if lo is None else "%.12g" % lo,
+                          "inf" if hi is None else "%.12g" % hi)
 
 
 def rows_of(listing):
