@@ -8,9 +8,13 @@
 # empty file (placeholders only); a re-run that keeps the artist's
 # edited placeholders; a compound structure of three levels,
 # each leaf against --csv --flatten, and its growth over frames read at
-# two frames; every example scene in one process;
-# a too-old Blender's one-line refusal; the import add-on and its
-# Phyllotaxis panel.
+# two frames; scripts re-run in one session (frames of two counts, a
+# compound, instances and duplicates): nothing orphaned, each re-run
+# leaving the .blend as the last did; every example scene in one
+# process; a too-old Blender's one-line refusal; the import add-on on
+# every example scene (its panel listing every setting, a re-import
+# leaving nothing orphaned), on bad scenes (the .blend unchanged), and
+# its Phyllotaxis panel.
 . tests/lib.sh
 
 : "${BLENDERS:=${BLENDER:-}}"
