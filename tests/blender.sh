@@ -164,17 +164,8 @@ for b in $BLENDERS; do
 	blend() { bl -b --python-exit-code 1 "$@" >"$OUT/blender.log" 2>&1; }
 	D=$OUT/$ver
 	mkdir -p "$D"
-	# addon ARGS...: tests/blender/addon.py with a user folder of its
-	# own; panel ARGS...: tests/blender/panel.py the same way.
-	addon() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
-		blend --factory-startup --python tests/blender/addon.py -- "$@"
-	)
-	panel() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
-		blend --factory-startup --python tests/blender/panel.py -- "$@"
-	)
-	# addon_script NAME ARGS...: tests/blender/NAME the same way.
+	# addon_script NAME ARGS...: tests/blender/NAME, which drives the
+	# add-on, with a user folder of its own and our program.
 	addon_script() (
 		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
 		s=$1
@@ -270,7 +261,7 @@ for b in $BLENDERS; do
 	if [ -f "$ADDON_ZIP" ] && [ -x "$ADDON_PROG" ]; then
 		rm -rf "$D/user"
 		try "$V: the import add-on installs, imports, re-imports, and reports a bad scene, and one bad at its last frame, changing nothing" \
-			addon "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
+			addon_script addon.py "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
 			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" \
 			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3"
 		cp "$OUT/blender.log" "$D/addon.log"
@@ -289,8 +280,8 @@ for b in $BLENDERS; do
 		cp scenes/goatsbeard.cfg "$D/gb/"
 		cp scenes/parts/goatsbeard-pappus.cfg "$D/gb/parts/"
 		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value and its message wrapped, save to the scene file, numbers as typed, a setting taken out, a part's setting, frames" \
-			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
-		checked panel 51
+			addon_script panel.py "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
+		checked panel 53
 		end
 	else
 		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"

@@ -49,6 +49,7 @@ def check(ok, what):
 
 
 install_addon(zip_path)
+start = state.snapshot()
 
 
 def positions(leaves=False):
@@ -251,10 +252,11 @@ top = bpy.context.scene.phyllo_structure
 check(top.phyllo.overrides() == [],
       "after saving, the panel shows the file's own values")
 saved = positions()
-# A fresh start (the add-on stays): everything of the structure gone.
-for kind in ("objects", "collections", "meshes", "node_groups"):
-    for d in list(getattr(bpy.data, kind)):
-        getattr(bpy.data, kind).remove(d)
+# A fresh start (the add-on stays): everything made since it was
+# installed gone.
+had = {(k, name) for k, blocks in start.items() for name, _ in blocks}
+bpy.data.batch_remove([d for k in state.kinds() for d in getattr(bpy.data, k)
+                       if (k, d.name) not in had])
 bpy.ops.import_scene.phyllotaxis(filepath=scene)
 check(same(positions(), saved) and same(saved, from_csv("scale.csv")),
       "re-importing the saved file builds the same structure")
@@ -414,5 +416,14 @@ scale.text = "0.035 + 0.01 * f"
 changes = state.differences(imported, state.snapshot())
 check(not st.overrides() and not changes and not state.orphans(imported),
       "and changed back: the .blend as the import left it (%s)" % changes)
+setting("count").integer = 200
+bpy.ops.phyllo.revert()
+st = bpy.context.scene.phyllo_structure.phyllo
+changes = state.differences(imported, state.snapshot())
+check(not st.overrides() and not changes,
+      "a change reverted: the .blend as the import left it (%s)" % changes)
+# The whole session, every import, change, undo, save and revert above.
+left = state.orphans(start)
+check(not left, "nothing orphaned by any of it %s" % left[:8])
 if failures:
     raise SystemExit("check: %d failed" % len(failures))
