@@ -281,7 +281,7 @@ for b in $BLENDERS; do
 		cp scenes/parts/goatsbeard-pappus.cfg "$D/gb/parts/"
 		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value and its message wrapped, save to the scene file, numbers as typed, a setting taken out, a part's setting, frames" \
 			addon_script panel.py "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
-		checked panel 53
+		checked panel 54
 		end
 	else
 		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"

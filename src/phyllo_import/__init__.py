@@ -271,7 +271,8 @@ def rows_of(listing):
         part = s["path"].split(":")[0] if ":" in s["path"] else ""
         row = dict(
             path=s["path"], type=s["type"], kind=kind, written=value,
-            file=files[part] if part else os.path.abspath(listing["scene"]),
+            file=files.get(part, "") if part else
+            os.path.abspath(listing["scene"]),
             origin=s["from"], default=s["default"], doc=s["doc"],
             unit=s.get("unit", ""), range=interval(s),
             choices="\n".join(s.get("choices", [])),
@@ -475,13 +476,20 @@ class PHYLLO_OT_revert(OnStructure, bpy.types.Operator):
     def execute(self, context):
         top = active_structure(context)
         st = top.phyllo
+        path = bpy.path.abspath(st.scene)
+        # Built first, the fields after: a failure (the file changed
+        # since, and now bad) leaves both as they were.
         try:
-            fill(st, rows_of(settings_of(context,
-                                         bpy.path.abspath(st.scene))))
-            rebuild(context, top)
-        except RuntimeError as e:
+            rows = rows_of(settings_of(context, path))
+            seconds = build(context, path, st.frames, [])
+        except (RuntimeError, ValueError, KeyError) as e:
+            st.error = str(e)
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
+        fill(st, rows)
+        st.error = ""
+        st.seconds = seconds
+        st.stale = False
         return {"FINISHED"}
 
 
@@ -502,7 +510,11 @@ class PHYLLO_OT_save(OnStructure, bpy.types.Operator):
         changes = {}        # file: its --set, a part's without "PART:"
         for s in st.settings:
             if s.changed() and s.value() != "" and s.applies:
-                changes.setdefault(s.file or main, []).append(
+                if not s.file:
+                    self.report({"ERROR"}, "%s: the file of its part is "
+                                "not known: nothing written" % s.path)
+                    return {"CANCELLED"}
+                changes.setdefault(s.file, []).append(
                     "%s=%s" % (s.path.split(":")[-1], s.value()))
         given = {s.path for s in st.settings if s.origin == "file"}
         tmps = []

@@ -27,6 +27,7 @@
 # the README's growth.  Prints "check: ..." lines like check.py.
 import csv
 import os
+import shutil
 import sys
 import types
 
@@ -422,6 +423,32 @@ st = bpy.context.scene.phyllo_structure.phyllo
 changes = state.differences(imported, state.snapshot())
 check(not st.overrides() and not changes,
       "a change reverted: the .blend as the import left it (%s)" % changes)
+# Revert after the file went bad at its last frame since: our message,
+# and the .blend and the panel's fields as they were.
+gone_bad = os.path.join(here, "stages-bad.cfg")
+shutil.copy(stages, gone_bad)
+bpy.ops.import_scene.phyllotaxis(filepath=gone_bad, frames=4)
+st = bpy.context.scene.phyllo_structure.phyllo
+setting("count").integer = 300
+with open(gone_bad) as f:
+    text = f.read().replace("count = 420;", 'count = "420 - 500 * f";')
+with open(gone_bad, "w") as f:
+    f.write(text)
+before = state.snapshot()
+fields = [(s.path, s.value()) for s in st.settings]
+try:
+    bpy.ops.phyllo.revert()
+    report = ""
+except RuntimeError as e:
+    report = str(e)
+st = bpy.context.scene.phyllo_structure.phyllo
+changes = state.differences(before, state.snapshot())
+check("stages-bad.cfg:10: frame 4 of 4" in report and
+      "stages-bad.cfg:10: frame 4 of 4" in st.error and not changes and
+      [(s.path, s.value()) for s in st.settings] == fields,
+      "Revert of a file gone bad since: its message (%r), the .blend (%s) "
+      "and the panel as they were" % (report, changes))
+
 # The whole session, every import, change, undo, save and revert above.
 left = state.orphans(start)
 check(not left, "nothing orphaned by any of it %s" % left[:8])
