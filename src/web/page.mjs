@@ -242,9 +242,11 @@ let typing = null;
 function edited(path, text) {
   state.files[path] = text;
   state.changedAt ??= performance.now();
+  if (typing === null)
+    state.pending++;	// for idle(): a run is on its way
   clearTimeout(typing);
-  state.pending++;
   typing = setTimeout(() => {
+    typing = null;
     state.pending--;
     changed();
   }, TYPING_MS);
