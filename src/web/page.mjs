@@ -168,9 +168,11 @@ async function build(gen, t0) {
       frames.at = Math.min(Math.max(1, frames.at), frames.used ? frames.count : 1);
       await view.show(frames.glb[frames.at - 1], state.reframe);
       state.reframe = false;
-      // The frame drawn and handed on.
-      await new Promise(r => requestAnimationFrame(() => setTimeout(r, 0)));
+      // Timed: the picture drawn (its draw calls made), then the frame
+      // handed on to be shown, which waits for the GPU to draw it.
       state.timing = { picture: performance.now() - t0 };
+      await new Promise(r => requestAnimationFrame(() => setTimeout(r, 0)));
+      state.timing.frame = performance.now() - t0;
     } else {
       view.parent.classList.add('stale');
     }

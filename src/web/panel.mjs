@@ -209,15 +209,20 @@ export class Panel {
   // Messages about --set PATH=...: each under its field; those of a path
   // with no field returned, for the page to show.
   errors(messages) {
-    for (const r of this.rows.values())
+    for (const r of this.rows.values()) {
       r.error.textContent = '';
+      r.error.className = 'warn';
+    }
     const rest = [];
     for (const m of messages) {
       const r = m.set !== null ? this.rows.get(m.set) : undefined;
-      if (r !== undefined)
+      if (r !== undefined) {
         r.error.textContent = r.error.textContent ? r.error.textContent + '\n' + m.text : m.text;
-      else if (m.set !== null)
+        if (!m.warning)
+          r.error.className = 'err';
+      } else if (m.set !== null) {
         rest.push(m);
+      }
     }
     return rest;
   }

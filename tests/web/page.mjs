@@ -149,7 +149,6 @@ try {
     new TextDecoder().decode((await window.phyllo.run(['--version'])).stdout));
   report(errors.length === 0 && version === new TextDecoder().decode(native(['--version']).stdout),
     'the page loads with no error; window.phyllo runs the program (--version)', `${errors.join('; ')} ${version}`);
-  await page.screenshot({ path: `${out}/page.png` });
 
   // --- Every example scene: the organs three.js draws are --csv's. ---
   const index = JSON.parse(fs.readFileSync(`${web}/scenes/index.json`, 'utf8'));
@@ -215,7 +214,7 @@ try {
     const want = new Set([...lines(native(['--settings', ...set, 'scenes/sunflower.cfg']).stderr),
       ...lines(native(['--gltf', ...set, 'scenes/sunflower.cfg']).stderr)]);
     const got = await messages(page);
-    const under = await page.locator('.setting:has(input[data-path="count"]) .err').textContent();
+    const under = await page.locator('.setting:has(input[data-path="count"]) div.err').textContent();
     report(got.length > 0 && got.length === want.size && got.every(m => want.has(m)) && under === got[0],
       'page: a bad value in the panel: the native message, under its field', `${got} / ${[...want]} / ${under}`);
   }
@@ -392,6 +391,15 @@ try {
       'page: a scene, mesh and .mtl holding markup and script, and a --set of it: shown as text, nothing ran, no policy violated',
       JSON.stringify({ ...state, text: undefined, listed: undefined, dialogs, got1, got2 }));
   }
+
+  // The README's picture: the coneflower, its divergence changed.
+  await page.selectOption('#example', 'scenes/coneflower.cfg');
+  await idle(page);
+  await page.fill('input[data-path="divergence"]', '137.45');
+  await page.press('input[data-path="divergence"]', 'Enter');
+  await idle(page);
+  await page.waitForTimeout(500);
+  await page.screenshot({ path: `${out}/page.png` });
 
   report(elsewhere.length === 0, `page: nothing fetched but from ${base} (offline)`, elsewhere.join(' '));
   report(errors.length === 0, 'page: no error in the console all along', errors.join('; '));

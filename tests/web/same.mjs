@@ -47,13 +47,38 @@ function tokens(text) {
   return { words, numbers };
 }
 
-// The long base64 strings of a --blender script: float32 data, a
-// structure's split over several strings (lines).
-const BASE64 = /"([A-Za-z0-9+/]{24,}={0,2})"/g;
+// A --blender script's structures: each "(FRAME, NAME, COUNT, [...]," then
+// its data, lines of base64 alone: little-endian float32, every
+// position (x, y, z), then every rotation (Euler XYZ, radians), then
+// every scale (templates/blender.tmpl).
+const STRUCTURE = /^\s*\(\d+, "[^"\n]*", (\d+), \[$/;
+const DATA = /^\s*"([A-Za-z0-9+/]+={0,2})"\)?,?$/;
 
-function floats(strings) {
-  const bytes = Uint8Array.from(strings.map(atob).join(''), c => c.charCodeAt(0));
-  return new Float32Array(bytes.buffer, 0, bytes.length >> 2);
+// The structures' data, decoded, and the text with those lines
+// emptied (to be compared as text).
+function blenderData(text) {
+  const structures = [], rest = [];
+  let cur = null;
+  for (const line of text.split('\n')) {
+    let m;
+    if ((m = STRUCTURE.exec(line)) !== null) {
+      structures.push(cur = { count: Number(m[1]), data: [] });
+    } else if (cur !== null && (m = DATA.exec(line)) !== null) {
+      cur.data.push(m[1]);
+      rest.push('""');
+      continue;
+    } else if (cur !== null && cur.data.length > 0) {
+      cur = null;
+    }
+    rest.push(line);
+  }
+  return {
+    rest: rest.join('\n'),
+    structures: structures.map(({ count, data }) => {
+      const bytes = Uint8Array.from(data.map(atob).join(''), c => c.charCodeAt(0));
+      return { count, floats: new Float32Array(bytes.buffer, 0, bytes.length >> 2) };
+    }),
+  };
 }
 
 // Two float32 values: within 2 ulps of a float, or both below 1e-7
@@ -64,7 +89,10 @@ function closeFloats(x, y, scale) {
   return Math.abs(x - y) / (Math.max(Math.abs(x), Math.abs(y)) * 2 ** -23);
 }
 
-function compareFloats(a, b, r) {
+// Floats a and b: within 2 ulps, or residues; angle: equal modulo a
+// turn (an Euler angle of pi and one of -pi are the same rotation, and
+// which one atan2() gives follows the sign of a residue).
+function compareFloats(a, b, r, angle = () => false) {
   if (a.length !== b.length) {
     r.worst = Infinity;
     r.first ||= `${a.length} floats against ${b.length}`;
@@ -77,11 +105,32 @@ function compareFloats(a, b, r) {
   for (let i = 0; i < a.length; i++) {
     if (Object.is(a[i], b[i]))
       continue;
-    const e = closeFloats(a[i], b[i], scale);
+    let y = b[i];
+    if (angle(i) && Math.abs(a[i] - y) > Math.PI)
+      y += a[i] > y ? 2 * Math.PI : -2 * Math.PI;
+    const e = closeFloats(a[i], Math.fround(y), scale);
     r.worst = Math.max(r.worst, e);
     r.count++;
     r.first ||= `float ${a[i]} against ${b[i]}`;
   }
+}
+
+// The structures' data of two --blender scripts.
+function compareBlender(a, b, r) {
+  if (a.length !== b.length) {
+    r.worst = Infinity;
+    r.first ||= `${a.length} structures against ${b.length}`;
+    return;
+  }
+  a.forEach((s, k) => {
+    const n = s.count;
+    if (s.floats.length !== 7 * n || b[k].count !== n) {
+      r.worst = Infinity;
+      r.first ||= `structure ${k}: ${s.floats.length} floats for ${n} organs`;
+      return;
+    }
+    compareFloats(s.floats, b[k].floats, r, i => i >= 3 * n && i < 6 * n);
+  });
 }
 
 // --info's output-bytes: line estimates the bytes each format would
@@ -120,15 +169,11 @@ export function compareText(want, got) {
     return { identical: true, close: true, worst: 0, count: 0, first: '' };
   const r = { identical: false, close: false, worst: 0, count: 0, first: '' };
   const fail = where => ({ ...r, worst: Infinity, first: where });
-  const data = t => [...t.matchAll(BASE64)].map(m => m[1]);
-  const da = data(want), db = data(got);
-  if (da.length !== db.length)
-    return fail(`${da.length} base64 strings against ${db.length}`);
-  if (da.join() !== db.join())
-    compareFloats(floats(da), floats(db), r);
+  const da = blenderData(want), db = blenderData(got);
+  compareBlender(da.structures, db.structures, r);
   compareEstimates(want, got, r);
-  const strip = t => t.replace(BASE64, '""').replace(ESTIMATES, '');
-  const a = tokens(strip(want)), b = tokens(strip(got));
+  const a = tokens(da.rest.replace(ESTIMATES, ''));
+  const b = tokens(db.rest.replace(ESTIMATES, ''));
   if (a.numbers.length !== b.numbers.length)
     return fail(`${a.numbers.length} numbers against ${b.numbers.length}`);
   // Each number's line's largest magnitude: number i follows words[i].
