@@ -128,12 +128,17 @@ async function update() {
     else
       fault(e);
   } finally {
-    state.pending--;
-    if (state.pending === 0) {
-      const all = state.idle;
-      state.idle = [];
-      all.forEach(r => r());
-    }
+    settled();
+  }
+}
+
+// One thing idle() waits for is done.
+function settled() {
+  state.pending--;
+  if (state.pending === 0) {
+    const all = state.idle;
+    state.idle = [];
+    all.forEach(r => r());
   }
 }
 
@@ -249,8 +254,8 @@ function edited(path, text) {
   clearTimeout(typing);
   typing = setTimeout(() => {
     typing = null;
-    state.pending--;
     changed();
+    settled();
   }, TYPING_MS);
 }
 
@@ -460,6 +465,15 @@ $('example').addEventListener('change', () => openExample($('example').value));
  * FILE_MAX, the scene the .cfg no other names (or the shallowest).
  */
 async function openFiles(list) {
+  state.pending++;	// for idle(): the files are being read
+  try {
+    await readFiles(list);
+  } finally {
+    settled();
+  }
+}
+
+async function readFiles(list) {
   const files = {}, problems = [];
   const decoder = new TextDecoder('utf-8', { fatal: true, ignoreBOM: true });
   for (const { path, file } of list) {
@@ -516,7 +530,7 @@ for (const id of ['files', 'folder']) {
     const list = [...$(id).files].map(file => ({
       path: file.webkitRelativePath || file.name, file }));
     $(id).value = '';
-    openFiles(list);
+    openFiles(list).catch(fault);
   });
 }
 
@@ -549,6 +563,15 @@ document.addEventListener('dragleave', e => {
 document.addEventListener('drop', async e => {
   e.preventDefault();
   document.body.classList.remove('dropping');
+  state.pending++;	// for idle(): the files are being gathered
+  try {
+    await dropped(e);
+  } finally {
+    settled();
+  }
+});
+
+async function dropped(e) {
   const items = [...e.dataTransfer.items].map(i => i.webkitGetAsEntry && i.webkitGetAsEntry());
   let list = [];
   if (items.length > 0 && items.every(Boolean)) {
@@ -557,8 +580,8 @@ document.addEventListener('drop', async e => {
   } else {
     list = [...e.dataTransfer.files].map(file => ({ path: file.name, file }));
   }
-  openFiles(list);
-});
+  await openFiles(list);
+}
 
 // --- For scripts and tests. ---
 

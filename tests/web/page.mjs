@@ -260,6 +260,38 @@ try {
     report(sel === line, 'page: a message clicked selects its line in the text', `line ${sel}`);
   }
 
+  {
+    // An expression's error: its line and column.
+    const text = await page.evaluate(() => window.phylloPage.scene);
+    await page.fill('#text', text.replace('count = 0;', 'count = 630;').replace('"1.1 * r"', '"1.1 * q"'));
+    await idle(page);
+    const got = await messages(page);
+    const at = /:(\d+):(\d+): /.exec(got[0] || '');
+    await page.click('#messages li');
+    const sel = await page.evaluate(() => {
+      const t = document.getElementById('text');
+      const before = t.value.slice(0, t.selectionStart).split('\n');
+      return [before.length, before[before.length - 1].length + 1,
+        t.value.slice(t.selectionStart, t.selectionEnd)];
+    });
+    report(at !== null && sel[0] === Number(at[1]) && sel[1] === Number(at[2]) && sel[2] === 'q',
+      `page: an expression's error (${got[0]}) clicked selects its line and column`, `${got} / ${sel}`);
+  }
+
+  // --- A setting the others leave unused: greyed, with the reason. ---
+  await page.selectOption('#example', 'scenes/sunflower-emerged.cfg');
+  await idle(page);
+  {
+    const s = JSON.parse(new TextDecoder().decode(native(['--settings', 'scenes/sunflower-emerged.cfg']).stdout))
+      .settings.find(x => x.path === 'divergence');
+    const row = page.locator('.setting:has(input[data-path="divergence"])');
+    const why = await row.locator('.why').textContent();
+    const disabled = await page.isDisabled('input[data-path="divergence"]');
+    const grey = await row.evaluate(e => e.classList.contains('unused'));
+    report(s.applies === false && disabled && grey && why === s.why,
+      `page: with the inhibition model the divergence is greyed out, with --settings' reason ("${s.why}")`, `${disabled} ${grey} ${why}`);
+  }
+
   // --- The limits: 10,000,000 organs shown are over the output bound. ---
   await page.selectOption('#example', 'scenes/sunflower.cfg');
   await idle(page);
@@ -308,6 +340,16 @@ try {
     // --flatten changes nothing for a scene without parts.
     report(c.close && download.suggestedFilename() === 'stages-3.csv',
       'page: the .csv download at frame 3 is native --frames 4\'s third file', `${c.first} ${download.suggestedFilename()}`);
+    await page.fill('#frame-count', '100001');
+    await page.press('#frame-count', 'Enter');
+    await idle(page);
+    const n = native(['--gltf', '--frames', '100001', '-o', 'x%d.glb', 'scenes/stages.cfg']);
+    const got = await messages(page);
+    report(n.status === 2 && got.join('\n') === lines(n.stderr).join('\n'),
+      'page: 100001 frames: the native --frames limit\'s message', `${got} / ${n.stderr}`);
+    await page.fill('#frame-count', '10');
+    await page.press('#frame-count', 'Enter');
+    await idle(page);
   }
 
   // --- A long run: its progress, and Cancel. ---
@@ -350,6 +392,29 @@ try {
     report(/^picture\.png: not a text file/.test(shown) &&
       /^big\.cfg: 104,857,600 bytes: the page opens files of up to 16 MiB$/.test(shownBig) && after === before,
       'page: a file that is not text, and a 100 MB one, are refused with a message; the scene stays', `${shown} / ${shownBig} / ${after}`);
+  }
+
+  // --- Files dropped on the page: the scene and its mesh. ---
+  {
+    const scene = 'model = "planar";\ncount = 40;\norgans = ( { object = "Arrow"; mesh = "arrow.obj"; } );\n';
+    await page.evaluate(([scene, obj, mtl]) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([scene], 'dropped.cfg'));
+      dt.items.add(new File([obj], 'arrow.obj'));
+      dt.items.add(new File([mtl], 'arrow.mtl'));
+      document.body.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+    }, [scene, fs.readFileSync('tests/gltf/arrow.obj', 'utf8'), fs.readFileSync('tests/gltf/arrow.mtl', 'utf8')]);
+    await page.waitForFunction(() => window.phylloPage.scenePath === 'dropped.cfg');
+    await idle(page);
+    const dir = `${out}/dropped`;
+    fs.mkdirSync(dir, { recursive: true });
+    fs.writeFileSync(`${dir}/dropped.cfg`, scene);
+    fs.copyFileSync('tests/gltf/arrow.obj', `${dir}/arrow.obj`);
+    fs.copyFileSync('tests/gltf/arrow.mtl', `${dir}/arrow.mtl`);
+    const n = native(['--csv', 'dropped.cfg'], dir);
+    const why = await sameOrgans(page, new TextDecoder().decode(n.stdout));
+    const got = await messages(page);
+    report(!why && got.length === 0, 'page: a scene and its mesh dropped on the page: shown, the organs --csv\'s, no message', why || got.join('; '));
   }
 
   // --- Markup and script in a scene run nowhere. ---
