@@ -33,7 +33,8 @@ const state = {
   reframe: true,
   messages: [],
   timing: {},
-  pending: 0,		// updates asked for and not done
+  changedAt: null,	// when the change being run was made
+  pending: 0,		// what idle() waits for: updates, files being read
   idle: [],
   fault: null,
 };
@@ -43,9 +44,7 @@ const view = new View($('view'));
 const editor = new Editor({ select: $('file'), gutter: $('gutter'),
   text: $('text'), messages: $('messages') }, edited);
 editor.onSwitch = path => editor.show(path, state.files[path]);
-const panel = new Panel($('settings'), document.createElement('div'), setting);
-$('panel').insertBefore(panel.last, $('settings'));
-panel.last.className = 'last';
+const panel = new Panel($('settings'), $('last'), setting);
 let previewUrl = null;
 
 // --- What the page runs. ---
