@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "compat/compat.h"
 #include "scene/cfgtext.h"
 #include "diag.h"
 #include "mem.h"
@@ -133,7 +134,7 @@ int
 objtext_read(const char *path, long max, const char *what,
     char **text, size_t *len)
 {
-	FILE *fp = fopen(path, "rb");
+	FILE *fp = sys_fopen(path, "rb");
 	struct stat st;
 	size_t got;
 
