@@ -86,9 +86,26 @@ px --csv --set 'inhibition.kernel="power"' -o "$OUT/inh-power.csv" "$OUT/inh.cfg
 px --csv --set 'inhibition.kernel="power"' --set inhibition.exponent=2 -o "$OUT/inh-exp2.csv" "$OUT/inh.cfg"
 # The power law's with its exponent in the file: the Gaussian from the menu.
 printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "power"; exponent = 3; growth = 0.1; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/inh-file-exp.cfg"
-ADDON_ZIP=$TESTBIN/phyllo_import.zip
-# Statically linked: it runs inside the roots, whose libconfig differs.
-ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
+# The add-on: the zips carrying their program (Blender 4.2 and later
+# install the extension for Linux, 3.x the legacy one), and the plain
+# one of make install, which finds a phyllo-export on PATH.
+ADDON_PLAIN=$TESTBIN/phyllo_import.zip
+ADDON_LINUX=$TESTBIN/phyllo_import-${VERSION:-0}-linux-x64.zip
+ADDON_LEGACY=$TESTBIN/phyllo_import-${VERSION:-0}-legacy.zip
+# A machine with no phyllo-export: this one's PATH without the folders
+# holding one, and without any relative folder.
+NOPROG_PATH=$(printf '%s\n' "$PATH" | tr : '\n' | while read -r d; do
+	case $d in /*) [ -x "$d/phyllo-export" ] || printf '%s:' "$d" ;; esac
+done)
+NOPROG_PATH=${NOPROG_PATH%:}
+# A phyllo-export on PATH for the plain add-on, and a decoy in a scene's
+# folder it must not run; the program is the add-on's own (static: it
+# runs in the roots, whose libconfig is another soname or none).
+mkdir -p "$OUT/bin" "$OUT/decoy"
+cp "$TESTBIN/phyllo-export-static" "$OUT/bin/phyllo-export" 2>/dev/null
+printf '#!/bin/sh\ntouch "$(dirname "$0")/ran"\n' >"$OUT/decoy/phyllo-export"
+chmod 755 "$OUT/decoy/phyllo-export"
+cp scenes/daisy.cfg "$OUT/decoy/"
 DAISY_COUNT=$(px --info scenes/daisy.cfg | sed -n 's/^count: //p')
 
 # Blender depends on python3, so it is here whenever Blender is.
@@ -120,16 +137,23 @@ for b in $BLENDERS; do
 	blend() { bl -b --python-exit-code 1 "$@" >"$OUT/blender.log" 2>&1; }
 	D=$OUT/$ver
 	mkdir -p "$D"
-	# addon ARGS...: tests/blender/addon.py with a user folder of its
-	# own; panel ARGS...: tests/blender/panel.py the same way.
+	# ADDON SCRIPT ARGS...: tests/blender/SCRIPT.py with a user folder
+	# of its own, on a machine with no phyllo-export (but on $OPATH).
 	addon() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
-		blend --factory-startup --python tests/blender/addon.py -- "$@"
+		unset PHYLLO_EXPORT
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PATH="${OPATH:+$OPATH:}$NOPROG_PATH"
+		blend --factory-startup --python "tests/blender/$1.py" -- "$2" "$(pwd)/$OUT/decoy/daisy.cfg" "$DAISY_COUNT" \
+			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" "$3"
 	)
 	panel() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
+		unset PHYLLO_EXPORT
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PATH=$NOPROG_PATH
 		blend --factory-startup --python tests/blender/panel.py -- "$@"
 	)
+	case $ver in
+	[0-3].* | 4.[01].*) zip=$ADDON_LEGACY ;;
+	*) zip=$ADDON_LINUX ;;
+	esac
 
 	try "$V: make the artist's .blend (saved, then reopened)" \
 		blend --factory-startup --python tests/blender/make_blend.py -- "$D/artist.blend"
@@ -207,23 +231,42 @@ for b in $BLENDERS; do
 	done
 
 	# The add-on, installed into a user folder of its own.
-	if [ -f "$ADDON_ZIP" ] && [ -x "$ADDON_PROG" ]; then
+	if [ -f "$zip" ] && [ -f "$ADDON_PLAIN" ] && [ -x "$OUT/bin/phyllo-export" ]; then
 		rm -rf "$D/user"
-		try "$V: the import add-on installs, imports, re-imports and reports a bad scene" \
-			addon "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
-			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:"
+		OPATH=
+		try "$V: the add-on with its own program ($(basename "$zip")), no phyllo-export on PATH nor PHYLLO_EXPORT: installs, imports, re-imports and reports a bad scene" \
+			addon addon "$(pwd)/$zip" own
 		cp "$OUT/blender.log" "$D/addon.log"
 		assert "Blender exit 0" '[ $rc -eq 0 ]'
-		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 6 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 7 ]'
+		end
+		rm -rf "$D/user"
+		# PATH: our folder, then relative ones ("" and . are the
+		# current folder, which holds a phyllo-export of its own).
+		OPATH="$(pwd)/$OUT/bin::."
+		try "$V: the plain add-on (make install's) runs the phyllo-export on PATH" \
+			addon addon "$(pwd)/$ADDON_PLAIN" "$(pwd)/$OUT/bin/phyllo-export"
+		cp "$OUT/blender.log" "$D/plain.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/plain.log && [ $(grep -c "check: ok" $D/plain.log) -eq 7 ]'
+		end
+		rm -rf "$D/user" "$OUT/decoy/ran"
+		OPATH=".::"
+		try "$V: with none on PATH the plain add-on says so, and runs none from the current or the scene's folder" \
+			addon lookup "$(pwd)/$ADDON_PLAIN"
+		OPATH=
+		cp "$OUT/blender.log" "$D/lookup.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/lookup.log && [ $(grep -c "check: ok" $D/lookup.log) -eq 3 ]'
 		end
 		rm -rf "$D/user"
 		cp "$OUT/panel.cfg" "$D/panel.cfg"
 		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value, save to the scene file, frames" \
-			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
+			panel "$(pwd)/$zip" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
 		checked panel 29
 		end
 	else
-		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"
+		skip "$V: import add-on (make $zip $ADDON_PLAIN)"
 	fi
 
 	# As if this Blender were older than the oldest the script knows.

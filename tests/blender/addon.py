@@ -2,9 +2,11 @@
 # zip the way this Blender expects (an extension from 4.2 on, a legacy
 # add-on before), enabled, in File > Import, run on a scene, run again,
 # and run on a bad scene.  Usage:
-#   blender -b --factory-startup --python addon.py -- ZIP GOOD.cfg COUNT BAD.cfg WHERE
-# where COUNT is the good scene's organ count and WHERE the FILE:LINE
-# the bad scene's error names.  Prints "check: ..." lines like check.py.
+#   blender -b --factory-startup --python addon.py -- ZIP GOOD.cfg COUNT BAD.cfg WHERE PROGRAM
+# where COUNT is the good scene's organ count, WHERE the FILE:LINE
+# the bad scene's error names, and PROGRAM the phyllo-export the add-on
+# must choose: "own" for the one in its zip, else a path.  Prints
+# "check: ..." lines like check.py.
 import os
 import sys
 
@@ -13,7 +15,8 @@ import bpy
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from install import install_addon  # noqa: E402 (after the path)
 
-zip_path, good, count, bad, where = sys.argv[sys.argv.index("--") + 1:][:5]
+zip_path, good, count, bad, where, expect = \
+    sys.argv[sys.argv.index("--") + 1:][:6]
 count = int(count)
 failures = []
 
@@ -30,6 +33,17 @@ check(hasattr(bpy.types, "IMPORT_SCENE_OT_phyllotaxis"),
       "the add-on is installed and enabled")
 menu = [f.__name__ for f in bpy.types.TOPBAR_MT_file_import._dyn_ui_initialize()]
 check("menu_import" in menu, "File > Import lists it")
+
+# The add-on's module: phyllo_import, or bl_ext.REPO.phyllo_import.
+addon = [m for n, m in sys.modules.items() if n.split(".")[-1] ==
+         "phyllo_import"][0]
+chosen = addon.program(bpy.context)
+if expect == "own":
+    check(chosen is not None and os.path.dirname(os.path.dirname(chosen)) ==
+          os.path.dirname(os.path.abspath(addon.__file__)),
+          "it runs the program in its own folder (%s)" % chosen)
+else:
+    check(chosen == expect, "it runs %s (%s)" % (expect, chosen))
 
 
 def organs():
