@@ -399,10 +399,14 @@ family(struct sink *s, struct page *P, size_t ci, int f)
 	}
 	if (open)
 		sink_puts(s, "\"/>\n");
-	/* The ends nearest the rim or base first. */
+	/*
+	 * The ends nearest the rim or base first; ends level in exact
+	 * arithmetic (a row at a cone's base) in the chains' order, not
+	 * by the last bits of the sines that placed them.
+	 */
 	for (size_t i = 1; i < nends; i++)
 		for (size_t j = i; j > 0 && outwardness(P, ends[j]) >
-		    outwardness(P, ends[j - 1]); j--) {
+		    outwardness(P, ends[j - 1]) + 1e-6 * P->em; j--) {
 			size_t t = ends[j];
 
 			ends[j] = ends[j - 1];
