@@ -205,6 +205,47 @@ try "once it is closed, the file is replaced" wx --pov -o "$OUT/held.inc" "$SUN"
 assert "exit 0, the include" '[ $rc -eq 0 ] && same_out "$OUT/sun-ref.inc" "$OUT/held.inc" >"$OUT/diff"'
 end
 
+# Ctrl-C while writing (wine gives the program SIGINT as Windows'
+# console event): the temporary removed, the target whole, and the exit
+# status Windows' for it, STATUS_CONTROL_C_EXIT (0xC000013A; 58 here).
+# A run killed outright leaves its temporary, named for its (Windows')
+# process, and the next run to the file removes it.
+printf 'model = "planar";\ncount = 5000000;\n' >"$OUT/big.cfg"
+printf 'precious\n' >"$OUT/sig.csv"
+tmp_of() { ls -A "$OUT" | grep '^sig.csv.phyllo-export-[0-9]*.tmp$'; }
+# A shell's background job ignores SIGINT, and wine then makes no
+# Ctrl-C of it: env gives the signal back its default.
+env --default-signal=INT "$WINE" "$WINDOWS_EXE" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
+pid=$!
+i=0
+while [ $i -lt 200 ] && [ -z "$(tmp_of)" ]; do
+	sleep 0.05
+	i=$((i + 1))
+done
+kill -INT $pid 2>/dev/null
+wait $pid
+status=$?
+try "Ctrl-C while writing removes the temporary and leaves the target" true
+assert "the temporary had appeared" '[ $i -lt 200 ]'
+assert "ended by it (status $status)" '[ $status -eq 58 ]'
+assert "target unchanged, no temporary" '[ "$(cat $OUT/sig.csv)" = precious ] && no_tmp "$OUT"'
+end
+"$WINE" "$WINDOWS_EXE" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
+pid=$!
+i=0
+while [ $i -lt 200 ] && [ -z "$(tmp_of)" ]; do
+	sleep 0.05
+	i=$((i + 1))
+done
+left=$(tmp_of)
+kill -KILL $pid 2>/dev/null
+wait $pid 2>/dev/null
+try "a run killed outright leaves its temporary, which the next run removes" wx --csv -o "$OUT/sig.csv" "$SUN"
+assert "it had been left ($left)" '[ -n "$left" ]'
+assert "exit 0, the file written" '[ $rc -eq 0 ] && [ "$(head -c 2 $OUT/sig.csv)" = n, ]'
+assert "the temporary removed" '[ ! -e "$OUT/$left" ] && no_tmp "$OUT"'
+end
+
 # Devices' names, characters Windows forbids, and a path past MAX_PATH.
 for name in NUL con.inc Aux.pov "lpt1 .txt" "a:b.inc" "dot.inc."; do
 	try "-o \"$name\" is refused with a clear message" wx --pov -o "$OUT/$name" "$SUN"

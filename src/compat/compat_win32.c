@@ -433,8 +433,9 @@ sys_running(long pid)
 /*
  * Windows calls a console's handler on a thread of its own while the
  * program runs on: sys_hold() is a lock the handler waits for.  It then
- * removes the files (shared for deleting, sys_create()) and lets the
- * default handler end the program.
+ * removes the files (shared for deleting, sys_create()) and ends the
+ * program as Ctrl-C's default handler does, with STATUS_CONTROL_C_EXIT
+ * (wine's own would exit 0).
  */
 static void (*volatile cleanup_fn)(void);
 static SRWLOCK hold = SRWLOCK_INIT;
@@ -446,7 +447,8 @@ on_event(DWORD event)
 	AcquireSRWLockExclusive(&hold);
 	if (cleanup_fn != NULL)
 		cleanup_fn();
-	return FALSE;
+	ExitProcess(STATUS_CONTROL_C_EXIT);
+	return TRUE;
 }
 
 void
