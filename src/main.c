@@ -12,6 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "compat/compat.h"
 #include "diag.h"
 #include "mem.h"
 #include "models/model.h"
@@ -369,7 +370,7 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 		return ST_USAGE;
 	}
 	if ((a->writer->opts & TO_BINARY) && a->output == NULL &&
-	    isatty(STDOUT_FILENO)) {
+	    sys_isatty(STDOUT_FILENO)) {
 		/* As gzip: bytes on a terminal garble it and help no one. */
 		diag(ST_USAGE, NULL, 0, 0, "--%s writes binary data, not to a "
 		    "terminal: give -o FILE or redirect standard output",
@@ -411,7 +412,9 @@ parse_args(int argc, char *argv[], struct args *a)
 
 /*
  * The format's template: --template FILE, installed, or built in; path
- * is left the file's name, or "" for the built-in one.
+ * is left the file's name, or "" for the built-in one.  A program that
+ * travels (Windows, the Blender add-on's) is built with SHAREDIR ""
+ * and keeps to its own.
  */
 static struct tmpl *
 load_template(const struct args *a, char *path, size_t sz)
@@ -423,7 +426,7 @@ load_template(const struct args *a, char *path, size_t sz)
 		return tmpl_load(a->template, a->writer->vars);
 	}
 	snprintf(path, sz, "%s/%s", SHAREDIR, name);
-	if (access(path, R_OK) == 0)
+	if (SHAREDIR[0] != '\0' && sys_readable(path))
 		return tmpl_load(path, a->writer->vars);
 	path[0] = '\0';
 	return tmpl_builtin(name, a->writer->vars);
@@ -441,15 +444,16 @@ main(int argc, char *argv[])
 	st = parse_args(argc, argv, &a);
 	if (st < 0 && fflush(stdout) != 0)	/* --help, --version */
 		diag(ST_SYSTEM, "<stdout>", 0, 0, "%s", strerror(errno));
-	if (st == 0 && isatty(STDERR_FILENO))
+	if (st == 0 && sys_isatty(STDERR_FILENO))
 		progress_start();
 	if (st == 0 && (a.writer->tmpl == NULL ||
 	    (t = load_template(&a, path, sizeof(path))) != NULL)) {
 		struct job j = { a.writer, t, path[0] ? path : NULL, a.scene,
 		    a.output, (a.objects ? TO_OBJECTS : 0) |
 		    (a.flatten ? TO_FLATTEN : 0), a.frames, a.set, a.nset,
-		    a.max_output, isatty(STDERR_FILENO) ? progress_written :
-		    NULL, isatty(STDERR_FILENO) ? progress_placed : NULL };
+		    a.max_output, sys_isatty(STDERR_FILENO) ?
+		    progress_written : NULL, sys_isatty(STDERR_FILENO) ?
+		    progress_placed : NULL };
 
 		run(&j);
 		progress_clear();

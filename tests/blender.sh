@@ -125,9 +125,27 @@ px --csv --set planar.scale=0.0437 --set divergence=137.36 -o "$OUT/exact.csv" "
 # A part's setting changed, as the leaves show it.
 px --csv --flatten --set Achene:count=15 -o "$OUT/gb15.csv" scenes/goatsbeard.cfg
 cp scenes/stages.cfg "$OUT/stages.cfg"
-ADDON_ZIP=$TESTBIN/phyllo_import.zip
-# Statically linked: it runs inside the roots, whose libconfig differs.
-ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
+# The add-on: the zips carrying their program (Blender 4.2 and later
+# install the extension for Linux, 3.x the legacy one), and the plain
+# one of make install, which finds a phyllo-export on PATH.
+ADDON_PLAIN=$TESTBIN/phyllo_import.zip
+ADDON_LINUX=$TESTBIN/phyllo_import-${VERSION:-0}-linux-x64.zip
+ADDON_LEGACY=$TESTBIN/phyllo_import-${VERSION:-0}-legacy.zip
+# A machine with no phyllo-export: this one's PATH without the folders
+# holding one, and without any relative folder.
+NOPROG_PATH=$(printf '%s\n' "$PATH" | tr : '\n' | while read -r d; do
+	case $d in /*) [ -x "$d/phyllo-export" ] || printf '%s:' "$d" ;; esac
+done)
+NOPROG_PATH=${NOPROG_PATH%:}
+# A phyllo-export on PATH for the plain add-on, and a decoy in a scene's
+# folder it must not run; the program is the add-on's own (static: it
+# runs in the roots, whose libconfig is another soname or none).
+mkdir -p "$OUT/bin" "$OUT/decoy"
+cp "$TESTBIN/phyllo-export-static" "$OUT/bin/phyllo-export" 2>/dev/null
+ADDON_PROG=$(pwd)/$OUT/bin/phyllo-export
+printf '#!/bin/sh\ntouch "$(dirname "$0")/ran"\n' >"$OUT/decoy/phyllo-export"
+chmod 755 "$OUT/decoy/phyllo-export"
+cp scenes/daisy.cfg "$OUT/decoy/"
 DAISY_COUNT=$(px --info scenes/daisy.cfg | sed -n 's/^count: //p')
 
 # Blender depends on python3, so it is here whenever Blender is.
@@ -165,13 +183,19 @@ for b in $BLENDERS; do
 	D=$OUT/$ver
 	mkdir -p "$D"
 	# addon_script NAME ARGS...: tests/blender/NAME, which drives the
-	# add-on, with a user folder of its own and our program.
+	# add-on, with a user folder of its own, on a machine with no
+	# phyllo-export (but on $OPATH).
 	addon_script() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
+		unset PHYLLO_EXPORT
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PATH="${OPATH:+$OPATH:}$NOPROG_PATH"
 		s=$1
 		shift
 		blend --factory-startup --python "tests/blender/$s" -- "$@"
 	)
+	case $ver in
+	[0-3].* | 4.[01].*) zip=$ADDON_LEGACY ;;
+	*) zip=$ADDON_LINUX ;;
+	esac
 
 	try "$V: make the artist's .blend (saved, then reopened)" \
 		blend --factory-startup --python tests/blender/make_blend.py -- "$D/artist.blend"
@@ -258,20 +282,42 @@ for b in $BLENDERS; do
 	done
 
 	# The add-on, installed into a user folder of its own.
-	if [ -f "$ADDON_ZIP" ] && [ -x "$ADDON_PROG" ]; then
+	if [ -f "$zip" ] && [ -f "$ADDON_PLAIN" ] && [ -x "$OUT/bin/phyllo-export" ]; then
 		rm -rf "$D/user"
-		try "$V: the import add-on installs, imports, re-imports, and reports a bad scene, and one bad at its last frame, changing nothing" \
-			addon_script addon.py "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
+		OPATH=
+		try "$V: the add-on with its own program ($(basename "$zip")), no phyllo-export on PATH nor PHYLLO_EXPORT: installs, imports, re-imports, and reports a bad scene, and one bad at its last frame, changing nothing" \
+			addon_script addon.py "$(pwd)/$zip" "$(pwd)/$OUT/decoy/daisy.cfg" "$DAISY_COUNT" \
 			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" \
-			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3"
+			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3" own
 		cp "$OUT/blender.log" "$D/addon.log"
 		assert "Blender exit 0" '[ $rc -eq 0 ]'
-		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 7 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 8 ]'
+		end
+		rm -rf "$D/user"
+		# PATH: our folder, then relative ones ("" and . are the
+		# current folder, which holds a phyllo-export of its own).
+		OPATH="$(pwd)/$OUT/bin::."
+		try "$V: the plain add-on (make install's) runs the phyllo-export on PATH" \
+			addon_script addon.py "$(pwd)/$ADDON_PLAIN" "$(pwd)/$OUT/decoy/daisy.cfg" "$DAISY_COUNT" \
+			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" \
+			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3" "$ADDON_PROG"
+		cp "$OUT/blender.log" "$D/plain.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/plain.log && [ $(grep -c "check: ok" $D/plain.log) -eq 8 ]'
+		end
+		rm -rf "$D/user" "$OUT/decoy/ran"
+		OPATH=".::"
+		try "$V: with none on PATH the plain add-on says so, and runs none from the current or the scene's folder" \
+			addon_script lookup.py "$(pwd)/$ADDON_PLAIN" "$(pwd)/$OUT/decoy/daisy.cfg" "$(pwd)/$OUT/decoy/ran"
+		OPATH=
+		cp "$OUT/blender.log" "$D/lookup.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/lookup.log && [ $(grep -c "check: ok" $D/lookup.log) -eq 3 ]'
 		end
 		rm -rf "$D/user"
 		# shellcheck disable=SC2086
 		try "$V: the import add-on on every example scene (frames where it reads f): the panel lists every setting of --settings, as the file has it; imported again, nothing orphaned, the .blend as before" \
-			addon_script import_all.py "$(pwd)/$ADDON_ZIP" "$ADDON_PROG" $IMPORTS
+			addon_script import_all.py "$(pwd)/$zip" "$ADDON_PROG" $IMPORTS
 		checked import_all $(( $(echo $IMPORTS | wc -w) * 5 ))
 		end
 		rm -rf "$D/user" "$D/gb"
@@ -280,11 +326,11 @@ for b in $BLENDERS; do
 		cp scenes/goatsbeard.cfg "$D/gb/"
 		cp scenes/parts/goatsbeard-pappus.cfg "$D/gb/parts/"
 		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value and its message wrapped, save to the scene file, numbers as typed, a setting taken out, a part's setting, frames" \
-			addon_script panel.py "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
+			addon_script panel.py "$(pwd)/$zip" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
 		checked panel 54
 		end
 	else
-		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"
+		skip "$V: import add-on (make $zip $ADDON_PLAIN)"
 	fi
 
 	# As if this Blender were older than the oldest the script knows.

@@ -17,9 +17,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "compat/compat.h"
 #include "scene/cfgtext.h"
 #include "diag.h"
 #include "mem.h"
@@ -290,12 +289,14 @@ smoothing(struct obj *O, const char *p, const char *end)
 static char *
 library_path(const char *dir, const char *p, const char *end)
 {
-	size_t n = (size_t)(end - p), dn = *p == '/' ? 0 : strlen(dir);
-	char *path = xmalloc(dn + n + 1);
+	size_t n = (size_t)(end - p), dn;
+	char *path = xmalloc(strlen(dir) + n + 1);
 
+	memcpy(path, p, n);
+	path[n] = '\0';
+	dn = sys_absolute(path) ? 0 : strlen(dir);
+	memmove(path + dn, path, n + 1);
 	memcpy(path, dir, dn);
-	memcpy(path + dn, p, n);
-	path[dn + n] = '\0';
 	return path;
 }
 
@@ -306,7 +307,7 @@ material_library(struct obj *O, const char *p, const char *end)
 	char *path, *text, q[600];
 	const char *why;
 	size_t len;
-	struct stat st;
+	struct sys_stat st;
 	int rc;
 
 	p = objtext_skip(p, end);
@@ -319,10 +320,10 @@ material_library(struct obj *O, const char *p, const char *end)
 		return 0;
 	path = library_path(O->dir, p, end);
 	/* A library that cannot be read leaves the colours to us. */
-	why = stat(path, &st) != 0 ? strerror(errno) :
-	    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
-	    !S_ISREG(st.st_mode) ? "not a regular file" :
-	    access(path, R_OK) != 0 ? strerror(errno) : NULL;
+	why = sys_stat(path, &st) != 0 ? strerror(errno) :
+	    st.kind == SYS_DIR ? strerror(EISDIR) :
+	    st.kind != SYS_REG ? "not a regular file" :
+	    !sys_readable(path) ? strerror(errno) : NULL;
 	if (why != NULL) {
 		cfgtext_quote(q, sizeof(q), path);
 		diag(ST_OK, O->at.file, O->at.line, 0, "material library "
@@ -539,8 +540,7 @@ obj_parse(struct mesh *m, const char *file, const char *text, size_t len,
 static char *
 dir_of(const char *path)
 {
-	const char *slash = strrchr(path, '/');
-	size_t dn = slash != NULL ? (size_t)(slash - path + 1) : 0;
+	size_t dn = (size_t)(sys_base(path) - path);
 	char *dir = xmalloc(dn + 1);
 
 	memcpy(dir, path, dn);
@@ -554,14 +554,14 @@ obj_libraries(const char *path, obj_read_fn *told)
 	char line[4096], *dir;
 	FILE *fp;
 
-	if ((fp = fopen(path, "r")) == NULL)
+	if ((fp = sys_fopen(path, "rb")) == NULL)
 		return;
 	dir = dir_of(path);
 	while (fgets(line, sizeof(line), fp) != NULL) {
 		const char *p = objtext_skip(line, line + strlen(line));
 		const char *end = line + strlen(line), *w;
 		char *lib;
-		struct stat st;
+		struct sys_stat st;
 
 		if (strncmp(p, "mtllib", 6) != 0 || !objtext_blank(p[6]))
 			continue;
@@ -570,7 +570,7 @@ obj_libraries(const char *path, obj_read_fn *told)
 		if ((w = objtext_skip(p + 6, end)) == end)
 			continue;
 		lib = library_path(dir, w, end);
-		if (stat(lib, &st) == 0 && S_ISREG(st.st_mode))
+		if (sys_stat(lib, &st) == 0 && st.kind == SYS_REG)
 			told(lib);
 		free(lib);
 	}

@@ -16,7 +16,6 @@ import json
 import os
 import re
 import runpy
-import shutil
 import subprocess
 import tempfile
 import time
@@ -53,8 +52,8 @@ class PhylloPreferences(bpy.types.AddonPreferences):
 
     program: StringProperty(
         name="phyllo-export",
-        description="The phyllo-export program: a path, or a name "
-        "looked up on PATH",
+        description="The phyllo-export program, where the add-on carries "
+        "none of its own: a full path, or a name looked up on PATH",
         default="phyllo-export",
         subtype="FILE_PATH")
 
@@ -63,21 +62,45 @@ class PhylloPreferences(bpy.types.AddonPreferences):
 
 
 def program(context):
-    """The configured phyllo-export; PHYLLO_EXPORT overrides it."""
+    """The add-on's own program (bin/, in the zips for one system), else
+    the configured one (PHYLLO_EXPORT overrides it): a full path, or the
+    first on PATH's full folders -- never one in the current or the
+    scene's folder (shutil.which and Windows look there first)."""
+    ext = ".exe" if os.name == "nt" else ""
+    own = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin",
+                       "phyllo-export" + ext)
+    if os.path.isfile(own):
+        try:
+            if not os.access(own, os.X_OK):
+                os.chmod(own, 0o755)    # a zip's files lose their modes
+        except OSError:
+            pass
+        return own
     prefs = context.preferences.addons.get(PACKAGE)
     name = os.environ.get("PHYLLO_EXPORT") or (
         prefs.preferences.program if prefs else "phyllo-export")
-    return shutil.which(name) or name
+    if os.path.dirname(name):
+        return name if os.path.isabs(name) else None
+    found = (os.path.join(d, n) for d in os.environ.get("PATH", "").split(
+        os.pathsep) if os.path.isabs(d) for n in (name, name + ext))
+    return next((p for p in found if os.path.isfile(p) and
+                 os.access(p, os.X_OK)), None)
 
 
 def run_program(context, args):
     """Run phyllo-export with args (a list: no shell).  Returns its
     output, or raises RuntimeError with its own one-line message."""
     exe = program(context)
+    if exe is None:
+        raise RuntimeError("phyllo-export: program not found: install it, "
+                           "or give its full path in the add-on's "
+                           "preferences")
     try:
         run = subprocess.run([exe] + args, stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE,
-                             universal_newlines=True, timeout=600)
+                             stderr=subprocess.PIPE, encoding="utf-8",
+                             errors="replace", timeout=600,
+                             creationflags=getattr(
+                                 subprocess, "CREATE_NO_WINDOW", 0))
     except (OSError, subprocess.SubprocessError) as e:
         raise RuntimeError("phyllo-export: cannot run %s: %s" % (exe, e))
     if run.returncode != 0:

@@ -439,14 +439,14 @@ again:
 		sink_puts(s, "\"/>\n");
 	/*
 	 * The ends nearest the rim or base first; ends level to a
-	 * billionth of a label's size are a tie, kept in organ order: a
+	 * millionth of a label's size are a tie, kept in organ order: a
 	 * row at the base is level but for residues of rounding, which
-	 * differ from one maths library to another (glibc's, WebAssembly's
-	 * musl) and would move the label between them.
+	 * differ from one maths library to another (glibc's, mingw-w64's,
+	 * WebAssembly's musl) and would move the label between them.
 	 */
 	for (size_t i = 1; i < nends; i++)
 		for (size_t j = i; j > 0 && outwardness(P, ends[j]) >
-		    outwardness(P, ends[j - 1]) + 1e-9 * P->em; j--) {
+		    outwardness(P, ends[j - 1]) + 1e-6 * P->em; j--) {
 			size_t t = ends[j];
 
 			ends[j] = ends[j - 1];

@@ -33,6 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "compat/compat.h"
 #include "diag.h"
 #include "result/flatten.h"
 #include "mem.h"
@@ -311,7 +312,7 @@ tmpl_parse(const char *file, const char *text, size_t len,
 struct tmpl *
 tmpl_load(const char *path, const struct tmpl_var *extra)
 {
-	FILE *fp = fopen(path, "rb");
+	FILE *fp = sys_fopen(path, "rb");
 	struct tmpl *t;
 	char *buf;
 	size_t len;
@@ -364,8 +365,11 @@ tmpl_shipped_inputs(void)
 
 	for (const struct builtin_template *b = builtin_templates;
 	    b->name != NULL; b++) {
-		snprintf(path, sizeof(path), "%s/%s", SHAREDIR, b->name);
-		output_input(path, "a template phyllo-export installs");
+		/* A program that travels (SHAREDIR empty) has none. */
+		if (SHAREDIR[0] != '\0') {
+			snprintf(path, sizeof(path), "%s/%s", SHAREDIR, b->name);
+			output_input(path, "a template phyllo-export installs");
+		}
 		output_input(b->source, "a template phyllo-export is built "
 		    "from");
 	}

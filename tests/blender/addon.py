@@ -5,11 +5,12 @@
 # without frames, then with them: the .blend as it was, to the last
 # data-block and user, the timeline too.  Usage:
 #   blender -b --factory-startup --python addon.py -- ZIP GOOD.cfg COUNT \
-#       BAD.cfg WHERE GROW.cfg FRAMES WHERE
+#       BAD.cfg WHERE GROW.cfg FRAMES WHERE PROGRAM
 # where COUNT is the good scene's organ count and WHERE the FILE:LINE
 # the bad scene's error names, GROW.cfg the scene good at frame 1 and
-# bad at frame FRAMES, its WHERE its message's.  Prints "check: ..."
-# lines like check.py.
+# bad at frame FRAMES, its WHERE its message's, and PROGRAM the
+# phyllo-export the add-on must choose: "own" for the one in its zip,
+# else a path.  Prints "check: ..." lines like check.py.
 import os
 import sys
 
@@ -19,8 +20,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import state  # noqa: E402 (after the path)
 from install import install_addon  # noqa: E402
 
-(zip_path, good, count, bad, where, grow, frames,
- grow_where) = sys.argv[sys.argv.index("--") + 1:][:8]
+(zip_path, good, count, bad, where, grow, frames, grow_where,
+ expect) = sys.argv[sys.argv.index("--") + 1:][:9]
 count = int(count)
 failures = []
 
@@ -37,6 +38,17 @@ check(hasattr(bpy.types, "IMPORT_SCENE_OT_phyllotaxis"),
       "the add-on is installed and enabled")
 menu = [f.__name__ for f in bpy.types.TOPBAR_MT_file_import._dyn_ui_initialize()]
 check("menu_import" in menu, "File > Import lists it")
+
+# The add-on's module: phyllo_import, or bl_ext.REPO.phyllo_import.
+addon = [m for n, m in sys.modules.items() if n.split(".")[-1] ==
+         "phyllo_import"][0]
+chosen = addon.program(bpy.context)
+if expect == "own":
+    check(chosen is not None and os.path.dirname(os.path.dirname(chosen)) ==
+          os.path.dirname(os.path.abspath(addon.__file__)),
+          "it runs the program in its own folder (%s)" % chosen)
+else:
+    check(chosen == expect, "it runs %s (%s)" % (expect, chosen))
 
 
 def organs():
