@@ -55,6 +55,9 @@ done
 end
 if [ -n "${WINE:-}" ] && [ -n "${WINDOWS_EXE:-}" ]; then
 	export WINEPREFIX="$(pwd)/$(dirname "$WINDOWS_EXE")/wine" WINEDEBUG=-all
+	# The prefix is made on wine's first run, which says so on stderr:
+	# made here if tests/windows.sh (after this script) has not yet.
+	"$WINE" cmd /c exit >/dev/null 2>&1
 	try "the zip's program runs its sunflower, meshes and all, from the unpacked folder" \
 		sh -c 'cd "$0" && "$1" phyllo-export.exe --gltf -o sunflower.glb scenes\\sunflower.cfg' "$Z" "$WINE"
 	assert "exit 0, silent" '[ $rc -eq 0 ] && [ ! -s $OUT/stderr ]'
