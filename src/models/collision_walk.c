@@ -442,9 +442,10 @@ below_head(struct coll *C, int32_t k, int32_t j, double r, double t,
  * there depends on t only through its row: t0 itself is needed only
  * for a look at it.
  *
- * Row k starts at t_row[k] = curve_t(k a) (cover_init()), so t0 lies
- * in row floor(s0 / a) when curve_t() keeps the order of s0 and the
- * rows' ends.  It is the same function at both (the piece found by
+ * Row k starts at t_row[k] = curve_t(s_row[k]) (cover_init()), so t0
+ * lies in the row whose arc lengths hold s0 (floor(s0 / a) when all
+ * rows are a high) when curve_t() keeps the order of s0 and the rows'
+ * ends.  It is the same function at both (the piece found by
  * its start's arc length, then the same Newton iteration on the same
  * Gauss-Legendre sum), and it lands within about 1e-15 of the piece's
  * parameter span of that sum's root (its iteration stops on a step
@@ -462,10 +463,30 @@ start_row(const struct coll *C, double s0)
 	double x = s0 / cv->a, m = fmax(1e-6 * cv->a, 1e-12 * C->cv.length);
 	int32_t k;
 
-	if (C->nocover || !(s0 > 0 && s0 < C->cv.length) || !(x < cv->rows))
+	if (C->nocover || !(s0 > 0 && s0 < C->cv.length))
 		return -1;
-	k = (int32_t)x;
-	if (s0 - k * cv->a < m || fmin((k + 1) * cv->a, C->cv.length) - s0 < m)
+	if (cv->levels == 1) {
+		if (!(x < cv->rows))
+			return -1;
+		k = (int32_t)x;
+		if (s0 - k * cv->a < m || fmin((k + 1) * cv->a,
+		    C->cv.length) - s0 < m)
+			return -1;
+		return k;
+	}
+	if (!(s0 < cv->s_row[cv->rows]))
+		return -1;
+	for (int32_t lo = 0, hi = cv->rows - 1; ; ) {	/* s_row[lo] <= s0 */
+		k = (lo + hi + 1) / 2;
+		if (lo == hi)
+			break;
+		if (cv->s_row[k] <= s0)
+			lo = k;
+		else
+			hi = k - 1;
+	}
+	if (s0 - cv->s_row[k] < m || fmin(cv->s_row[k + 1], C->cv.length) -
+	    s0 < m)
 		return -1;
 	return k;
 }

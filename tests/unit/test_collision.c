@@ -269,6 +269,13 @@ static const struct {
 	{ "cylinder, radius falling 10x, a tall band", "collision = { "
 	  "receptacle = { shape = \"cylinder\"; radius = 0.05; height = 4; "
 	  "}; radius = \"0.01 * (1 - 0.9 * t)\"; }; count = 6000;" },
+	/*
+	 * Epsilon and a radius falling 5x, enough primordia for rows as
+	 * high as the radius where the front crosses them (collision.c).
+	 */
+	{ "disk, epsilon r, radius falling 5x, rows of many heights",
+	  "collision = { receptacle = { shape = \"disk\"; }; radius = "
+	  "\"0.0045 * (1 - 0.8 * t)\"; epsilon = \"r\"; }; count = 25000;" },
 };
 
 static void
@@ -307,6 +314,11 @@ cover_agrees(void)
 		if (strstr(large[i].what, "tall band") != NULL)
 			check(info(&a, "cover doubled", 0) == 1, "%s: the "
 			    "map's cells doubled", large[i].what);
+		/* And the rows of many heights. */
+		if (strstr(large[i].what, "many heights") != NULL)
+			check(info(&a, "cover levels", 0) >= 3, "%s: the map's "
+			    "rows of %g heights", large[i].what,
+			    info(&a, "cover levels", 0));
 		/*
 		 * And what refine() proved, closely: 9 x 9 points of every
 		 * cell it lowered (the check above samples every 31st cell
