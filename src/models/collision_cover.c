@@ -835,9 +835,11 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 
 	ra->k = k;
 	ra->zk = zk;
-	ra->q = cv->q[level(cv, k)];
-	ra->inv_q = cv->inv_q[level(cv, k)];
-	ra->final = cv->final[level(cv, k)];
+	if (cv->levels > 1) {	/* else cover_add() has set them */
+		ra->q = cv->q[level(cv, k)];
+		ra->inv_q = cv->inv_q[level(cv, k)];
+		ra->final = cv->final[level(cv, k)];
+	}
 	ra->rk = cv->rho_c[k];
 	ra->dz = cv->z_c[k] - ra->z;
 	ra->reach2 = reach * reach;
@@ -914,7 +916,8 @@ cover_add(struct cover *cv, double t, int32_t row, double phi, double x,
 	 * after each cell.
 	 */
 	struct row_add ra = { .x = x, .y = y, .z = z, .r = r,
-	    .rho = sqrt(x * x + y * y) };
+	    .rho = sqrt(x * x + y * y), .q = cv->q[0], .inv_q = cv->inv_q[0],
+	    .final = cv->final[0] };
 
 	if (cv->levels == 1) {
 		span = rows < cv->rows ? (int32_t)rows : cv->rows;
@@ -958,8 +961,10 @@ prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
 
 		if (covered(cv, lv, u, r)) {
 			/* Covered since: into the prefix with the rest. */
-			if (u * cv->q[lv] > cv->f[j])
-				cv->f[j] = u * cv->q[lv];
+			unsigned u0 = (unsigned)u << lv;
+
+			if (u0 > cv->f[j])
+				cv->f[j] = u0 < U_NONE ? (uint8_t)u0 : U_NONE;
 			if (cv->last[j] == *link)
 				cv->last[j] = prev;
 			*link = e->next;
@@ -1020,9 +1025,12 @@ column_up(const struct cover *cv, const uint8_t *run, int32_t e, int32_t j)
 	    cell(cv, e, j);
 }
 
-/* Column j's prefix grows by n rows, the largest bound among them most. */
+/*
+ * Column j's prefix grows by n rows, the largest bound among them most
+ * steps of q[0] (U_NONE: that many or more).
+ */
 static void
-prefix_grow(struct cover *cv, int32_t j, int32_t n, double most)
+prefix_grow(struct cover *cv, int32_t j, int32_t n, uint8_t most)
 {
 	cv->head[j] += n;
 	if (most > cv->f[j])
@@ -1034,17 +1042,17 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 {
 	/* Walks mostly step a row at a time: try the next row first. */
 	int32_t k = *row, h, e;
-	int moved = 0, lv;
+	int moved = 0, lv, varied = cv->levels > 1;
 	uint8_t lim, most = 0;
 	uint64_t below_lim, below_most;
 	const uint8_t *run;
-	double mostv = 0;
+	unsigned most0 = 0;	/* in steps of q[0], rows of other levels */
 
 	if (cv->band && *t >= cv->t_row[cv->rows]) {
 		*row = -1;	/* unmapped: the walk goes on alone */
 		return 0;
 	}
-	if (cv->f[j] >= r)
+	if (cv->f[j] * cv->q[0] >= r || (varied && cv->f[j] == U_NONE))
 		column_reset(cv, j);
 	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t))
 		/* Most walks start at the base: search up from it. */
@@ -1080,19 +1088,20 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		int i = e & 7, end = cv->rows - (e & ~7) < 8 ?
 		    cv->rows - (e & ~7) : 8;
 
-		if (i == 0 && level(cv, e) != lv) {
+		if (varied && i == 0 && level(cv, e) != lv) {
 			/*
 			 * Rows of another height: the largest bound so far
 			 * as a length, and this level's steps from here.
 			 */
-			mostv = fmax(mostv, most * cv->q[lv]);
+			unsigned m0 = (unsigned)most << lv;
+
+			most0 = m0 > most0 ? m0 : most0;
 			lv = level(cv, e);
 			lim = cv->lim[lv];
 			below_lim = lanes(lim);
 			/* lim >= 1: a bound of 0 is under any radius. */
-			for (most = (uint8_t)fmin(mostv * cv->inv_q[lv], lim - 1);
-			    most > 0 && most * cv->q[lv] > mostv; most--)
-				;
+			most = (most0 >> lv) < lim ? (uint8_t)(most0 >> lv) :
+			    (uint8_t)(lim - 1);
 			below_most = lanes(most + 1u);
 		}
 		/*
@@ -1122,8 +1131,12 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	}
 	if (e == k)
 		return moved;
-	if (k == h)
-		prefix_grow(cv, j, e - k, fmax(mostv, most * cv->q[lv]));
+	if (k == h) {
+		unsigned m0 = (unsigned)most << lv;
+
+		m0 = m0 > most0 ? m0 : most0;
+		prefix_grow(cv, j, e - k, m0 < U_NONE ? (uint8_t)m0 : U_NONE);
+	}
 	return move_to(cv, t, row, e);
 }
 

@@ -70,7 +70,9 @@ struct cover {
 	double		(*sub)[3];	/* rows * COVER_SUB: sub-row middles
 					   (rho, z) and their cells' d */
 	int32_t		*head;		/* cols: rows covered from the base */
-	double		*f;		/* cols: the largest U among them */
+	uint8_t		*f;		/* cols: the largest U among them, in
+					   steps of q[0] (255: more, or as
+					   many) */
 	int32_t		*first, *last;	/* cols: their exceptions, or -1 */
 	struct except	*ex;		/* the pool of exceptions */
 	size_t		 nex, exmax;
