@@ -502,7 +502,7 @@ coll_place_exact(struct coll *C, long long n, double t0, double s0,
     double phi, double c, double s, double r, int32_t *row, double p[2])
 {
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
-	double t = t0, to;
+	double t = t0, to, below = -1;
 	struct hit hits[HITS];
 	int skipped = 0;
 
@@ -522,14 +522,25 @@ coll_place_exact(struct coll *C, long long n, double t0, double s0,
 				C->start_misses += !(C->cover.t_row[k] <= e &&
 				    e < C->cover.t_row[k + 1]);
 			}
-			if (!cover_skip(&C->cover, &t, j, r, &k))
-				t = curve_t(&C->cv, s0);
+			/*
+			 * Row k is not covered for the walk.  With rows of
+			 * many heights (collision_cover.c) that is often so, a
+			 * row too coarse to be covered where t0 is, and
+			 * curve_t() would be a fifth of the walk: look at the
+			 * row's start first, whose point is known (below).
+			 */
+			if (!cover_skip(&C->cover, &t, j, r, &k)) {
+				if (C->cover.levels > 1)
+					below = s0;
+				else
+					t = curve_t(&C->cv, s0);
+			}
 		} else
 			t = curve_t(&C->cv, s0);
 	}
 	while (t <= C->cv.tmax) {
 		const double *pd = NULL;
-		int nh;
+		int nh, fr;
 
 		/* One call leaves t where the walk must look. */
 		if (!C->nocover && !skipped && cover_skip(&C->cover, &t, j, r,
@@ -539,7 +550,26 @@ coll_place_exact(struct coll *C, long long n, double t0, double s0,
 		/* Moved to a row's start: the curve there is known. */
 		if (k >= 0 && t == C->cover.t_row[k])
 			pd = C->cover.start[k];
-		if (free_at(C, t, c, s, r, pd, p, &to, hits, &nh)) {
+		fr = free_at(C, t, c, s, r, pd, p, &to, hits, &nh);
+		if (below >= 0) {
+			/*
+			 * That was row k's start, below t0 = curve_t(below):
+			 * blocked past the row, everything from it to the exit
+			 * is covered, t0 too; else t0 is worked out after all,
+			 * and the walk goes on from it or the exit, beyond.
+			 */
+			if (fr || !(to >= C->cover.t_row[k + 1])) {
+				double tt = curve_t(&C->cv, below);
+
+				t = !fr && to > tt ? to : tt;
+			} else
+				t = to;
+			/* At t0, row k is known not to be covered. */
+			skipped = t < C->cover.t_row[k + 1];
+			below = -1;
+			continue;
+		}
+		if (fr) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;
 		}
