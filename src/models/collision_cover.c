@@ -326,14 +326,21 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		 * Runs of 8 rows, each as high as its level, up to L, the
 		 * lowest CELL_FRAC r_min high; larger, if that would make
 		 * more than most cells (counted as if every row were as wide
-		 * as the widest, as cover_side() does).
+		 * as the widest, as cover_side() does, and its cells as
+		 * narrow as they may be).
 		 */
 		double most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX), cells;
-		double frac = CELL_FRAC, a_one = a;
+		double frac = CELL_FRAC, a_one = a;	/* a: cover_side()'s */
 		size_t cap = 64;
 		int varied = 0;
 
-		a = CELL_FRAC * r_min;
+		/*
+		 * Rows no lower than one height's map would have, capped:
+		 * the columns' tables (some 45 bytes a column of the lowest
+		 * rows) would grow as the rows shrink, and on a wide thin
+		 * band (the hemisphere's rim, 100,000) outgrow the cells
+		 * saved.
+		 */
 		cv->s_row = xcalloc(cap + 1, sizeof(*cv->s_row));
 		cv->be = xcalloc(cap / 8, sizeof(*cv->be));
 		for (int tries = 0; tries < 8; tries++) {
@@ -368,7 +375,8 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 				for (int i = 0; i < nr; i++, cv->rows++) {
 					cv->s_row[cv->rows + 1] =
 					    cv->s_row[cv->rows] + h[i];
-					cells += fmax(1, ceil(W / h[i]));
+					/* Columns may be h / sqrt 2 wide. */
+					cells += fmax(1, ceil(W / h[i] * M_SQRT2));
 				}
 			}
 			if (cells <= most)
