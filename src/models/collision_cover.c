@@ -93,14 +93,15 @@
  * cells a primordium, as on the dome, where cells of 0.6 r_min had it
  * write up to 200.  Used where the walks start near the front
  * (epsilon); a walk from the base crosses those rows later, at a
- * radius their bounds are far too coarse for.  Measured, instructions
- * a primordium (callgrind), falling radius and epsilon r, 100,000 /
- * 300,000 / to the tip: disk 10,570 / 13,570 / 14,367 -> 11,381 /
- * 11,192 / 11,900, hemisphere 10,608 / 12,149 / 13,699 -> 10,442 /
- * 10,339 / 11,944, sphere 15,278 / 14,449 / 14,914 -> 12,529 / 11,650
- * / 12,496 (the dome: 7,606).  Rows of 0.5 or 0.45 of the radius, or
- * columns as wide as the rows are high, cost more (the start rows of
- * walks less often covered: more curve_t()).
+ * radius their bounds are far too coarse for.  Its start row is then
+ * often not covered where the walk starts, and it looks at the row's
+ * start before working its start out (collision_walk.c).  Measured,
+ * instructions a primordium (callgrind), falling radius and epsilon r,
+ * 100,000 / 300,000 / to the tip: disk 10,570 / 13,570 / 14,367 ->
+ * 8,101 / 9,038 / 10,453, hemisphere 10,608 / 12,149 / 13,699 -> 8,076
+ * / 8,862 / 10,065, sphere 15,278 / 14,449 / 14,914 -> 10,606 / 10,370
+ * / 10,140 (the dome: 7,606 -> 7,647).  Rows of 0.5 or 0.45 of the
+ * radius, or columns as wide as the rows are high, cost more.
  *
  * For the walks from the base, the rows below the front would need
  * their room kept otherwise than in bounds.  Tried, and kept on the
