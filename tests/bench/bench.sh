@@ -113,6 +113,7 @@ echo "== collision model on every receptacle, fill and radius law, one core"
 # row's figure is its best round, so a row that one round caught on a
 # slow minute does not set it, and the two codes' rows are measured
 # minutes apart, not a run apart.  The first round's own lines first.
+# BENCH_CPU=1: each case's CPU time, not the clock's (a shared machine).
 R=${MATRIX_ROUNDS:-3}
 i=1
 while [ "$i" -le "$R" ]; do
