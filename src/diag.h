@@ -2,6 +2,8 @@
 #ifndef DIAG_H
 #define DIAG_H
 
+#include "compat/compat.h"
+
 /* Exit statuses; the program's status only ever rises. */
 enum status {
 	ST_OK = 0,
@@ -17,9 +19,7 @@ enum status {
  */
 void	 diag(enum status st, const char *file, int line, int col,
 	    const char *fmt, ...)
-#if defined(__GNUC__)
-	    __attribute__((format(printf, 5, 6)))
-#endif
+	    PRINTFLIKE(5, 6)
 	    ;
 enum status diag_status(void);
 

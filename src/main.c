@@ -12,6 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "compat/compat.h"
 #include "diag.h"
 #include "mem.h"
 #include "models/model.h"
@@ -21,10 +22,6 @@
 #include "scene/suggest.h"
 #include "run.h"
 #include "writers/writer.h"
-
-#ifndef SHAREDIR
-#define SHAREDIR "/usr/local/share/phyllo-export"
-#endif
 
 struct args {
 	const struct writer *writer;
@@ -233,6 +230,22 @@ bad_option(const char *arg, int opt, const struct option *longopts)
 /* Long options beyond the writers' own: output, template, arrays, ... */
 enum { OPT_WRITER = 256, NOPTIONS = 10 };
 
+/* Whether name holds a %d as --frames fills in (%03d, not %%d). */
+static int
+frame_pattern(const char *name)
+{
+	for (const char *p = name; (p = strchr(p, '%')) != NULL; p++) {
+		if (p[1] == '%') {
+			p++;
+			continue;
+		}
+		p += strspn(p + 1, "0123456789");
+		if (p[1] == 'd')
+			return 1;
+	}
+	return 0;
+}
+
 static int
 parse(int argc, char *argv[], struct args *a, struct option *longopts)
 {
@@ -356,6 +369,18 @@ parse(int argc, char *argv[], struct args *a, struct option *longopts)
 		    "--arrays");
 		return ST_USAGE;
 	}
+	if ((a->writer->opts & TO_BINARY) && a->output == NULL &&
+	    sys_isatty(STDOUT_FILENO)) {
+		/* As gzip: bytes on a terminal garble it and help no one. */
+		diag(ST_USAGE, NULL, 0, 0, "--%s writes binary data, not to a "
+		    "terminal: give -o FILE or redirect standard output",
+		    a->writer->name);
+		return ST_USAGE;
+	}
+	if (!a->frames && a->output != NULL && frame_pattern(a->output))
+		diag(ST_OK, NULL, 0, 0, "-o %s: a %%d in the name is filled "
+		    "in only with --frames; writing the file as named",
+		    a->output);
 	a->scene = argv[optind];
 	if (a->frames && strcmp(a->scene, "-") == 0) {
 		diag(ST_USAGE, NULL, 0, 0, "--frames reads the scene once a "
@@ -387,7 +412,9 @@ parse_args(int argc, char *argv[], struct args *a)
 
 /*
  * The format's template: --template FILE, installed, or built in; path
- * is left the file's name, or "" for the built-in one.
+ * is left the file's name, or "" for the built-in one.  A program that
+ * travels (Windows, the Blender add-on's) is built with SHAREDIR ""
+ * and keeps to its own.
  */
 static struct tmpl *
 load_template(const struct args *a, char *path, size_t sz)
@@ -399,7 +426,7 @@ load_template(const struct args *a, char *path, size_t sz)
 		return tmpl_load(a->template, a->writer->vars);
 	}
 	snprintf(path, sz, "%s/%s", SHAREDIR, name);
-	if (access(path, R_OK) == 0)
+	if (SHAREDIR[0] != '\0' && sys_readable(path))
 		return tmpl_load(path, a->writer->vars);
 	path[0] = '\0';
 	return tmpl_builtin(name, a->writer->vars);
@@ -417,15 +444,16 @@ main(int argc, char *argv[])
 	st = parse_args(argc, argv, &a);
 	if (st < 0 && fflush(stdout) != 0)	/* --help, --version */
 		diag(ST_SYSTEM, "<stdout>", 0, 0, "%s", strerror(errno));
-	if (st == 0 && isatty(STDERR_FILENO))
+	if (st == 0 && sys_isatty(STDERR_FILENO))
 		progress_start();
 	if (st == 0 && (a.writer->tmpl == NULL ||
 	    (t = load_template(&a, path, sizeof(path))) != NULL)) {
 		struct job j = { a.writer, t, path[0] ? path : NULL, a.scene,
 		    a.output, (a.objects ? TO_OBJECTS : 0) |
 		    (a.flatten ? TO_FLATTEN : 0), a.frames, a.set, a.nset,
-		    a.max_output, isatty(STDERR_FILENO) ? progress_written :
-		    NULL, isatty(STDERR_FILENO) ? progress_placed : NULL };
+		    a.max_output, sys_isatty(STDERR_FILENO) ?
+		    progress_written : NULL, sys_isatty(STDERR_FILENO) ?
+		    progress_placed : NULL };
 
 		run(&j);
 		progress_clear();

@@ -4,7 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#if defined(__linux__)
+/* configure's test-madv_hugepage.c: Linux's, in its own words. */
+#if HAVE_MADV_HUGEPAGE
 #include <sys/mman.h>
 #endif
 
@@ -70,7 +71,7 @@ xcalloc_big(size_t n, size_t sz)
 {
 	void *p = xcalloc(n, sz);
 
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
+#if HAVE_MADV_HUGEPAGE
 	/* The whole huge pages inside, before anything touches them. */
 	if (sz != 0 && n >= 8 * HUGE_PAGE / sz) {
 		uintptr_t a = ((uintptr_t)p + HUGE_PAGE - 1) & ~(uintptr_t)

@@ -7,6 +7,11 @@
 #define VERSION		"0.0"
 #endif
 
+/* Where make install puts the templates: the Makefile passes it. */
+#ifndef SHAREDIR
+#define SHAREDIR	"/usr/local/share/phyllo-export"
+#endif
+
 /* 360 (2 - tau), tau the golden ratio: the default divergence, degrees. */
 #define GOLDEN_ANGLE	137.50776405003785
 

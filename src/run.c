@@ -42,7 +42,7 @@ struct made {
 	struct meshes	 ms;		/* for writers reading meshes */
 };
 
-#define MADE_NONE	{ { NULL, 0 }, { NULL, 0, NULL, 0 }, { NULL, 0 } }
+#define MADE_NONE	{ { NULL, 0 }, { NULL, 0, NULL, 0 }, { NULL, 0, 0 } }
 
 static int
 make(const struct job *j, int F, struct made *m)
@@ -69,8 +69,9 @@ make(const struct job *j, int F, struct made *m)
 	 * which objects have none.
 	 */
 	if (rc == 0 && (j->writer->opts & (TO_MESHES | TO_SIZES)))
-		rc = meshes_load(&m->ms, &m->c, (j->writer->opts & TO_MESHES) &&
-		    F == (j->frames ? j->frames : 1));
+		rc = meshes_load(&m->ms, &m->c, (j->writer->opts & TO_MESHES ?
+		    0 : MESH_SIZES) | ((j->writer->opts & TO_MESHES) &&
+		    F == (j->frames ? j->frames : 1) ? MESH_WARN : 0));
 	if (rc == 0)
 		plan_make(&m->p, j->writer, j->tmpl, compound_main(&m->c));
 	return rc;
@@ -206,6 +207,7 @@ inputs(const struct job *j, const struct compound *c)
 		output_input(j->scene, "the scene file");
 	if (j->template_path != NULL)
 		output_input(j->template_path, "the template in use");
+	tmpl_shipped_inputs();
 	for (size_t i = 0; i < c->n; i++) {
 		if (c->parts[i]->object[0] == '\0')
 			continue;

@@ -8,9 +8,13 @@
 # empty file (placeholders only); a re-run that keeps the artist's
 # edited placeholders; a compound structure of three levels,
 # each leaf against --csv --flatten, and its growth over frames read at
-# two frames; every example scene in one process;
-# a too-old Blender's one-line refusal; the import add-on and its
-# Phyllotaxis panel.
+# two frames; scripts re-run in one session (frames of two counts, a
+# compound, instances and duplicates): nothing orphaned, each re-run
+# leaving the .blend as the last did; every example scene in one
+# process; a too-old Blender's one-line refusal; the import add-on on
+# every example scene (its panel listing every setting, a re-import
+# leaving nothing orphaned), on bad scenes (the .blend unchanged), and
+# its Phyllotaxis panel.
 . tests/lib.sh
 
 : "${BLENDERS:=${BLENDER:-}}"
@@ -47,6 +51,9 @@ cp -r tests/regress/compound/tree.cfg tests/regress/compound/mid.cfg tests/regre
 px --blender -o "$OUT/tree.py" "$OUT/tree.cfg"
 px --csv --flatten -o "$OUT/tree.csv" "$OUT/tree.cfg"
 px --blender --frames 3 -o "$OUT/grow.py" "$OUT/tree.cfg"
+# The README's growth, re-run in one session with another count of frames.
+px --blender --frames 24 -o "$OUT/stages24.py" scenes/stages.cfg
+px --blender --frames 4 -o "$OUT/stages4.py" scenes/stages.cfg
 # One scene of every model, for the whole frame of every organ: a
 # cylinder's organs point u along the axis (Euler's gimbal lock), a
 # sphere's face every way.
@@ -60,6 +67,21 @@ for s in $POSES; do
 done
 px --csv --flatten --frames 3 -o "$OUT/grow%d.csv" "$OUT/tree.cfg"
 printf 'model = "planar";\ncount = 0;\n' >"$OUT/bad-addon.cfg"
+printf 'model = "planar";\ncount = "100 - 200 * f";\n' >"$OUT/bad-grow.cfg"
+# What the add-on imports, each in every Blender: every example scene,
+# with 4 frames where it reads f or F (its frames differ), and one with
+# a seed wider than Blender's integer fields and numbers as strings.
+printf 'model = "planar";\ncount = 30;\nseed = 4000000000L;\nplanar = { scale = "0.1"; };\norgans = ( { object = "Seed"; tilt = "15"; } );\n' >"$OUT/edge.cfg"
+IMPORTS="$(pwd)/$OUT/edge.cfg"
+for cfg in scenes/*.cfg; do
+	b=$(basename "$cfg" .cfg)
+	px --csv --flatten --frames 2 -o "$OUT/frames-$b-%d.csv" "$cfg"
+	if cmp -s "$OUT/frames-$b-1.csv" "$OUT/frames-$b-2.csv"; then
+		IMPORTS="$IMPORTS $(pwd)/$cfg"
+	else
+		IMPORTS="$IMPORTS $(pwd)/$cfg:4"
+	fi
+done
 # The panel's scene, and --csv of what its changes should build.
 cat >"$OUT/panel.cfg" <<'CFG'
 # A head for the panel's test: its comments must survive a save.
@@ -84,11 +106,46 @@ printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "gaussian"; 
 px --csv -o "$OUT/inh.csv" "$OUT/inh.cfg"
 px --csv --set 'inhibition.kernel="power"' -o "$OUT/inh-power.csv" "$OUT/inh.cfg"
 px --csv --set 'inhibition.kernel="power"' --set inhibition.exponent=2 -o "$OUT/inh-exp2.csv" "$OUT/inh.cfg"
-# The power law's with its exponent in the file: the Gaussian from the menu.
-printf 'model = "inhibition";\ncount = 60;\ninhibition = { kernel = "power"; exponent = 3; growth = 0.1; };\norgans = ( { object = "Seed"; } );\n' >"$OUT/inh-file-exp.cfg"
-ADDON_ZIP=$TESTBIN/phyllo_import.zip
-# Statically linked: it runs inside the roots, whose libconfig differs.
-ADDON_PROG=$(pwd)/$TESTBIN/phyllo-export-static
+# The power law's with its exponent in the file: the Gaussian from the
+# menu, and Save, which takes the exponent out (a copy per Blender).
+cat >"$OUT/inh-file-exp.cfg" <<'CFG'
+# The power law's kernel, its exponent given.
+model = "inhibition";
+count = 60;
+inhibition = {
+  kernel = "power";
+  # its exponent
+  exponent = 3;
+  growth = 0.1;
+};
+organs = ( { object = "Seed"; } );
+CFG
+# Numbers as typed in the panel.
+px --csv --set planar.scale=0.0437 --set divergence=137.36 -o "$OUT/exact.csv" "$OUT/panel.cfg"
+# A part's setting changed, as the leaves show it.
+px --csv --flatten --set Achene:count=15 -o "$OUT/gb15.csv" scenes/goatsbeard.cfg
+cp scenes/stages.cfg "$OUT/stages.cfg"
+# The add-on: the zips carrying their program (Blender 4.2 and later
+# install the extension for Linux, 3.x the legacy one), and the plain
+# one of make install, which finds a phyllo-export on PATH.
+ADDON_PLAIN=$TESTBIN/phyllo_import.zip
+ADDON_LINUX=$TESTBIN/phyllo_import-${VERSION:-0}-linux-x64.zip
+ADDON_LEGACY=$TESTBIN/phyllo_import-${VERSION:-0}-legacy.zip
+# A machine with no phyllo-export: this one's PATH without the folders
+# holding one, and without any relative folder.
+NOPROG_PATH=$(printf '%s\n' "$PATH" | tr : '\n' | while read -r d; do
+	case $d in /*) [ -x "$d/phyllo-export" ] || printf '%s:' "$d" ;; esac
+done)
+NOPROG_PATH=${NOPROG_PATH%:}
+# A phyllo-export on PATH for the plain add-on, and a decoy in a scene's
+# folder it must not run; the program is the add-on's own (static: it
+# runs in the roots, whose libconfig is another soname or none).
+mkdir -p "$OUT/bin" "$OUT/decoy"
+cp "$TESTBIN/phyllo-export-static" "$OUT/bin/phyllo-export" 2>/dev/null
+ADDON_PROG=$(pwd)/$OUT/bin/phyllo-export
+printf '#!/bin/sh\ntouch "$(dirname "$0")/ran"\n' >"$OUT/decoy/phyllo-export"
+chmod 755 "$OUT/decoy/phyllo-export"
+cp scenes/daisy.cfg "$OUT/decoy/"
 DAISY_COUNT=$(px --info scenes/daisy.cfg | sed -n 's/^count: //p')
 
 # Blender depends on python3, so it is here whenever Blender is.
@@ -102,6 +159,11 @@ assert objects == [("Seed", 100), ("Bract", 50), ("Petal", 50)], objects
 ' "$OUT/head.py"
 assert "parses, STRUCTURES is a literal" '[ $rc -eq 0 ]'
 end
+
+# Python for --python-expr after a 3-frame script: a check line on the
+# timeline, which the script sets to the growth's frames.
+TIMELINE='import bpy; s = bpy.context.scene
+print("check: %s the timeline is the 3 frames of the growth (%d..%d)" % ("ok" if (s.frame_start, s.frame_end) == (1, 3) else "FAILED", s.frame_start, s.frame_end))'
 
 # checked NAME MIN: after a check.py run, keep its log as NAME.log and
 # assert Blender succeeded with no check failed and at least MIN passed.
@@ -120,16 +182,20 @@ for b in $BLENDERS; do
 	blend() { bl -b --python-exit-code 1 "$@" >"$OUT/blender.log" 2>&1; }
 	D=$OUT/$ver
 	mkdir -p "$D"
-	# addon ARGS...: tests/blender/addon.py with a user folder of its
-	# own; panel ARGS...: tests/blender/panel.py the same way.
-	addon() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
-		blend --factory-startup --python tests/blender/addon.py -- "$@"
+	# addon_script NAME ARGS...: tests/blender/NAME, which drives the
+	# add-on, with a user folder of its own, on a machine with no
+	# phyllo-export (but on $OPATH).
+	addon_script() (
+		unset PHYLLO_EXPORT
+		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PATH="${OPATH:+$OPATH:}$NOPROG_PATH"
+		s=$1
+		shift
+		blend --factory-startup --python "tests/blender/$s" -- "$@"
 	)
-	panel() (
-		export BLENDER_USER_RESOURCES="$(pwd)/$D/user" PHYLLO_EXPORT="$ADDON_PROG"
-		blend --factory-startup --python tests/blender/panel.py -- "$@"
-	)
+	case $ver in
+	[0-3].* | 4.[01].*) zip=$ADDON_LEGACY ;;
+	*) zip=$ADDON_LINUX ;;
+	esac
 
 	try "$V: make the artist's .blend (saved, then reopened)" \
 		blend --factory-startup --python tests/blender/make_blend.py -- "$D/artist.blend"
@@ -186,12 +252,21 @@ for b in $BLENDERS; do
 	done
 
 	for f in 1 3; do
-		try "$V: --frames 3, one script: at frame $f the leaves of frame $f alone, where its --flatten puts them" \
+		try "$V: --frames 3, one script: at frame $f the leaves of frame $f alone, where its --flatten puts them; the timeline ends at frame 3" \
 			blend "$D/artist.blend" --python "$OUT/grow.py" --python "$OUT/grow.py" \
+			--python-expr "$TIMELINE" \
 			--python tests/blender/check.py -- "$OUT/grow$f.csv" Tree leaves "$f"
-		checked grow$f 6
+		checked grow$f 7
 		end
 	done
+
+	try "$V: scripts re-run in one session (24 frames, 4, 24 again; a compound's frames; instances, linked duplicates, instances): nothing orphaned, each re-run leaves the .blend as the last run of it did" \
+		blend "$D/artist.blend" --python tests/blender/sequence.py -- \
+		"$OUT/stages24.py" "$OUT/stages4.py" "$OUT/stages24.py" \
+		"$OUT/grow.py" "$OUT/grow.py" \
+		"$OUT/head.py" "$OUT/head-obj.py" "$OUT/head.py"
+	checked sequence 11
+	end
 
 	# Every example scene, in one Blender process.
 	blend --factory-startup --python tests/blender/run_all.py -- "$OUT"/scene-*.py
@@ -207,23 +282,55 @@ for b in $BLENDERS; do
 	done
 
 	# The add-on, installed into a user folder of its own.
-	if [ -f "$ADDON_ZIP" ] && [ -x "$ADDON_PROG" ]; then
+	if [ -f "$zip" ] && [ -f "$ADDON_PLAIN" ] && [ -x "$OUT/bin/phyllo-export" ]; then
 		rm -rf "$D/user"
-		try "$V: the import add-on installs, imports, re-imports and reports a bad scene" \
-			addon "$(pwd)/$ADDON_ZIP" "$(pwd)/scenes/daisy.cfg" "$DAISY_COUNT" \
-			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:"
+		OPATH=
+		try "$V: the add-on with its own program ($(basename "$zip")), no phyllo-export on PATH nor PHYLLO_EXPORT: installs, imports, re-imports, and reports a bad scene, and one bad at its last frame, changing nothing" \
+			addon_script addon.py "$(pwd)/$zip" "$(pwd)/$OUT/decoy/daisy.cfg" "$DAISY_COUNT" \
+			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" \
+			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3" own
 		cp "$OUT/blender.log" "$D/addon.log"
 		assert "Blender exit 0" '[ $rc -eq 0 ]'
-		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 6 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/addon.log && [ $(grep -c "check: ok" $D/addon.log) -eq 8 ]'
 		end
 		rm -rf "$D/user"
-		cp "$OUT/panel.cfg" "$D/panel.cfg"
-		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value, save to the scene file, frames" \
-			panel "$(pwd)/$ADDON_ZIP" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
-		checked panel 29
+		# PATH: our folder, then relative ones ("" and . are the
+		# current folder, which holds a phyllo-export of its own).
+		OPATH="$(pwd)/$OUT/bin::."
+		try "$V: the plain add-on (make install's) runs the phyllo-export on PATH" \
+			addon_script addon.py "$(pwd)/$ADDON_PLAIN" "$(pwd)/$OUT/decoy/daisy.cfg" "$DAISY_COUNT" \
+			"$(pwd)/$OUT/bad-addon.cfg" "bad-addon.cfg:2:" \
+			"$(pwd)/$OUT/bad-grow.cfg" 3 "bad-grow.cfg:2: frame 3 of 3" "$ADDON_PROG"
+		cp "$OUT/blender.log" "$D/plain.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/plain.log && [ $(grep -c "check: ok" $D/plain.log) -eq 8 ]'
+		end
+		rm -rf "$D/user" "$OUT/decoy/ran"
+		OPATH=".::"
+		try "$V: with none on PATH the plain add-on says so, and runs none from the current or the scene's folder" \
+			addon_script lookup.py "$(pwd)/$ADDON_PLAIN" "$(pwd)/$OUT/decoy/daisy.cfg" "$(pwd)/$OUT/decoy/ran"
+		OPATH=
+		cp "$OUT/blender.log" "$D/lookup.log"
+		assert "Blender exit 0" '[ $rc -eq 0 ]'
+		assert "all checks" '! grep -q "check: FAILED" $D/lookup.log && [ $(grep -c "check: ok" $D/lookup.log) -eq 3 ]'
+		end
+		rm -rf "$D/user"
+		# shellcheck disable=SC2086
+		try "$V: the import add-on on every example scene (frames where it reads f): the panel lists every setting of --settings, as the file has it; imported again, nothing orphaned, the .blend as before" \
+			addon_script import_all.py "$(pwd)/$zip" "$ADDON_PROG" $IMPORTS
+		checked import_all $(( $(echo $IMPORTS | wc -w) * 5 ))
+		end
+		rm -rf "$D/user" "$D/gb"
+		cp "$OUT/panel.cfg" "$OUT/inh-file-exp.cfg" "$D/"
+		mkdir -p "$D/gb/parts"
+		cp scenes/goatsbeard.cfg "$D/gb/"
+		cp scenes/parts/goatsbeard-pappus.cfg "$D/gb/parts/"
+		try "$V: the Phyllotaxis panel: count and a model setting changed rebuild as --set says, undo, a bad value and its message wrapped, save to the scene file, numbers as typed, a setting taken out, a part's setting, frames" \
+			addon_script panel.py "$(pwd)/$zip" "$(pwd)/$D/panel.cfg" "$(pwd)/$OUT"
+		checked panel 54
 		end
 	else
-		skip "$V: import add-on (make $ADDON_ZIP $TESTBIN/phyllo-export-static)"
+		skip "$V: import add-on (make $zip $ADDON_PLAIN)"
 	fi
 
 	# As if this Blender were older than the oldest the script knows.

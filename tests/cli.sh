@@ -177,12 +177,58 @@ printf 'precious\n' >"$OUT/keep.csv"
 try "-o leaves its target alone on a scene error" px --csv -o "$OUT/keep.csv" tests/regress/scene/count-negative.cfg
 assert "exit 1" '[ $rc -eq 1 ]'
 assert "target unchanged" '[ "$(cat $OUT/keep.csv)" = precious ]'
-assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.keep")" ]'
+assert "no temporary file" 'no_tmp $OUT'
 end
 
-try "-o into a missing directory is a system error" px --csv -o "$OUT/no/such/dir/x.csv" "$GOOD"
+try "-o into a missing directory says the directory does not exist" px --csv -o "$OUT/no/such/dir/x.csv" "$GOOD"
 assert "exit 3" '[ $rc -eq 3 ]'
-assert "names the file" 'grep -q "x.csv" $OUT/stderr'
+assert "says so" 'grep -qx "phyllo-export: $OUT/no/such/dir/x.csv: directory $OUT/no/such/dir does not exist" $OUT/stderr'
+end
+touch "$OUT/plain"
+try "-o under a file says it is not a directory" px --csv -o "$OUT/plain/x.csv" "$GOOD"
+assert "exit 3" '[ $rc -eq 3 ]'
+assert "says so" 'grep -qx "phyllo-export: $OUT/plain/x.csv: $OUT/plain is not a directory" $OUT/stderr'
+end
+
+# A read-only target, as an ordinary user: the shell's > and cp refuse
+# it, and so must -o's rename, which the directory alone would allow.
+# As root, the test runs the program as nobody (setpriv, util-linux).
+as_user=
+if [ "$(id -u)" -ne 0 ]; then
+	as_user=env
+elif command -v setpriv >/dev/null; then
+	as_user="setpriv --reuid=65534 --regid=65534 --clear-groups"
+fi
+if [ -n "$as_user" ] && mkdir -p "$OUT/ro" && chmod 777 "$OUT/ro" &&
+    $as_user sh -c 'echo precious >"$0/keep.inc" && chmod 444 "$0/keep.inc"' "$OUT/ro" 2>/dev/null &&
+    $as_user test -x "$PHYLLO"; then
+	try "-o refuses a read-only file, as an ordinary user" $as_user $RUN "$PHYLLO" --pov -o "$OUT/ro/keep.inc" "$GOOD"
+	assert "exit 3" '[ $rc -eq 3 ]'
+	assert "says why" 'grep -qx "phyllo-export: $OUT/ro/keep.inc: Permission denied: -o replaces only a file you may write" $OUT/stderr'
+	assert "the file is as it was, mode 444" '[ "$(cat $OUT/ro/keep.inc)" = precious ] && [ "$(stat -c %a $OUT/ro/keep.inc)" = 444 ]'
+	assert "no temporary file" '[ "$(ls -A $OUT/ro)" = keep.inc ]'
+	end
+	$as_user sh -c 'echo precious >"$0/f2.inc" && chmod 444 "$0/f2.inc"' "$OUT/ro"
+	try "--frames: a read-only frame file stops the run before any is written" $as_user $RUN "$PHYLLO" --pov --frames 3 -o "$OUT/ro/f%d.inc" "$GOOD"
+	assert "exit 3" '[ $rc -eq 3 ]'
+	assert "says which" 'grep -q "^phyllo-export: $OUT/ro/f2.inc: Permission denied" $OUT/stderr'
+	assert "nothing written" '[ "$(ls -A $OUT/ro | tr "\n" " ")" = "f2.inc keep.inc " ]'
+	end
+	ln -s keep.inc "$OUT/ro/link.inc"
+	try "-o refuses a read-only file through a link too" $as_user $RUN "$PHYLLO" --pov -o "$OUT/ro/link.inc" "$GOOD"
+	assert "exit 3, the file as it was" '[ $rc -eq 3 ] && [ "$(cat $OUT/ro/keep.inc)" = precious ]'
+	end
+else
+	skip "no ordinary user to try a read-only -o as (setpriv)"
+fi
+
+try "-o with a %d but no --frames writes the file as named, with a warning" px --csv -o "$OUT/g%d.csv" "$GOOD"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the file as named" '[ -s "$OUT/g%d.csv" ]'
+assert "warns" 'grep -qx "phyllo-export: warning: -o $OUT/g%d.csv: a %d in the name is filled in only with --frames; writing the file as named" $OUT/stderr'
+end
+try "-o with %%d (a % sign) is no pattern: no warning" px --csv -o "$OUT/g%%d.csv" "$GOOD"
+assert "exit 0, silent" '[ $rc -eq 0 ] && [ ! -s $OUT/stderr ]'
 end
 
 if [ -w /dev/full ]; then
@@ -199,6 +245,20 @@ else
 	skip "no writable /dev/full"
 fi
 
+if command -v script >/dev/null; then
+	# script(1) gives the program a terminal as standard output.
+	try "--gltf refuses a terminal as standard output, as gzip does" script -qec "$PHYLLO --gltf $GOOD; echo status \$?" /dev/null
+	assert "exit 2" 'grep -aq "^status 2" $OUT/stdout'
+	assert "says why" 'grep -aq "phyllo-export: --gltf writes binary data, not to a terminal: give -o FILE or redirect standard output" $OUT/stdout'
+	assert "no glTF bytes" '! grep -aq glTF $OUT/stdout'
+	end
+	try "text formats still go to a terminal" script -qec "$PHYLLO --csv $GOOD; echo status \$?" /dev/null
+	assert "exit 0" 'grep -aq "^status 0" $OUT/stdout'
+	end
+else
+	skip "script(1) not found: --gltf to a terminal"
+fi
+
 try "a closed stdout is a system error" sh -c '"$0" --csv "$1" >&-' "$PHYLLO" "$SUN"
 assert "exit 3" '[ $rc -eq 3 ]'
 assert "says so" 'grep -q "^phyllo-export: <stdout>: " $OUT/stderr'
@@ -210,6 +270,31 @@ try "a NUL byte is an error with its line" px --csv "$OUT/nul.cfg"
 assert "exit 1" '[ $rc -eq 1 ]'
 assert "message" 'grep -qx "phyllo-export: $OUT/nul.cfg:3: NUL byte in scene file" $OUT/stderr'
 assert "stdout empty" '[ ! -s $OUT/stdout ]'
+end
+
+# What editors write: no newline after a last-line comment, and (on
+# Windows) a UTF-8 byte-order mark.  libconfig 1.5 calls both a syntax
+# error; they are the same scene as without them.
+printf 'model = "planar";\ncount = 100;\n' >"$OUT/plain.cfg"
+px --csv "$OUT/plain.cfg" >"$OUT/plain.csv"
+printf 'model = "planar";\ncount = 100; # organs' >"$OUT/nonl.cfg"
+printf 'model = "planar";\ncount = 100; // organs' >"$OUT/nonl2.cfg"
+printf '\357\273\277model = "planar";\ncount = 100;\n' >"$OUT/bom.cfg"
+for f in nonl nonl2 bom; do
+	try "$f.cfg: read as the same scene" px --csv "$OUT/$f.cfg"
+	assert "exit 0, the same organs" '[ $rc -eq 0 ] && cmp -s $OUT/stdout $OUT/plain.csv'
+	end
+done
+printf '\357\273\277model = "planar";\ncount = 100;\nname = 3;\n' >"$OUT/bom-bad.cfg"
+try "an error after a byte-order mark keeps its line" px --csv "$OUT/bom-bad.cfg"
+assert "exit 1, line 3" '[ $rc -eq 1 ] && grep -q "^phyllo-export: $OUT/bom-bad.cfg:3: " $OUT/stderr'
+end
+try "--cfg keeps the byte-order mark and sets what the file has" px --cfg --set count=50 --set divergence=137 "$OUT/bom.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the mark kept, count set in place, divergence added" '[ "$(od -An -c -N3 $OUT/stdout | tr -d " ")" = "357273277" ] && [ "$(sed -n 2p $OUT/stdout)" = "count = 50;" ] && [ "$(sed -n 3p $OUT/stdout)" = "divergence = 137;" ]'
+end
+try "--cfg after a last-line comment without a newline: on a line of its own" px --cfg --set divergence=137 "$OUT/nonl.cfg"
+assert "exit 0, the comment kept, the setting after it" '[ $rc -eq 0 ] && [ "$(sed -n 2p $OUT/stdout)" = "count = 100; # organs" ] && [ "$(sed -n 3p $OUT/stdout)" = "divergence = 137;" ]'
 end
 
 head -c 4096 "$PHYLLO" | tr -d '\000' >"$OUT/garbage.cfg"
@@ -268,7 +353,7 @@ for sig in TERM INT; do
 	"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
 	pid=$!
 	i=0
-	while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^\.sig')" ]; do
+	while [ $i -lt 200 ] && [ -z "$(ls -A "$OUT" | grep '^sig.csv.phyllo-export-')" ]; do
 		sleep 0.05
 		i=$((i + 1))
 	done
@@ -278,9 +363,38 @@ for sig in TERM INT; do
 	assert "the temporary file had appeared" '[ $i -lt 200 ]'
 	assert "killed by the signal" '[ $rc -gt 128 ]'
 	assert "target unchanged" '[ "$(cat $OUT/sig.csv)" = precious ]'
-	assert "no temporary file" '[ -z "$(ls -A $OUT | grep "^\.sig")" ]'
+	assert "no temporary file" 'no_tmp $OUT'
 	end
 done
+
+# SIGKILL cannot be caught: the temporary stays, named for what it is,
+# and the next run to the same file removes it; a running process's is
+# left alone.
+printf 'precious\n' >"$OUT/sig.csv"
+try "after SIGKILL the temporary is named for us, and the next run removes it" true
+"$PHYLLO" --csv -o "$OUT/sig.csv" "$OUT/big.cfg" 2>/dev/null &
+pid=$!
+i=0
+while [ $i -lt 200 ] && [ ! -e "$OUT/sig.csv.phyllo-export-$pid.tmp" ]; do
+	sleep 0.05
+	i=$((i + 1))
+done
+kill -KILL $pid 2>/dev/null
+wait $pid 2>/dev/null
+assert "the temporary had appeared, visible, with the pid" '[ $i -lt 200 ]'
+assert "it stays after SIGKILL" '[ -e "$OUT/sig.csv.phyllo-export-$pid.tmp" ]'
+sleep 600 &
+alive=$!
+: >"$OUT/sig.csv.phyllo-export-$alive.tmp"
+: >"$OUT/other.csv.phyllo-export-$pid.tmp"
+px --csv -o "$OUT/sig.csv" "$GOOD" 2>/dev/null
+assert "the next run removed it" '[ ! -e "$OUT/sig.csv.phyllo-export-$pid.tmp" ]'
+assert "and wrote the file" 'cmp -s "$OUT/sig.csv" "$OUT/a-ref.csv"'
+assert "a running process's temporary stays" '[ -e "$OUT/sig.csv.phyllo-export-$alive.tmp" ]'
+assert "another file's stays" '[ -e "$OUT/other.csv.phyllo-export-$pid.tmp" ]'
+kill $alive 2>/dev/null
+wait $alive 2>/dev/null
+end
 
 printf 'model = "planar";\ncount = 1000000;\n' >"$OUT/million.cfg"
 try "a million organs are written in full" sh -c '"$0" --csv "$1" | wc -l' "$PHYLLO" "$OUT/million.cfg"
@@ -332,6 +446,29 @@ printf 'model = "inhibition";\ncount = 300;\n' >"$OUT/inh.cfg"
 try "--info: the inhibition model's settled line names its mean and spread" px --info "$OUT/inh.cfg"
 assert "settled: mean M; spread S" 'grep -Eq "^settled: mean [0-9.e+-]+; spread [0-9.e+-]+$" $OUT/stdout'
 assert "regime: fibonacci" 'grep -qx "regime: fibonacci" $OUT/stdout'
+end
+# The pair at the meristem, against the lattice the growth makes: on
+# log-polar coordinates (angle in radians, ln r), which keep angles,
+# primordium k plastochrons older sits k*divergence round and k*G out,
+# and the contact pair is the shortest step turning each way.
+for G in 0.02 0.01 0.002; do
+	printf 'model = "inhibition";\ncount = 800;\ninhibition = { growth = %s; radii = "grown"; };\n' $G >"$OUT/inh-g.cfg"
+	try "--info: the pair at the meristem at G = $G is the log-polar lattice's" px --info "$OUT/inh-g.cfg"
+	want=$(awk -v G=$G '/^settled:/ { d = $3 + 0 }
+		END {
+			for (k = 1; k <= 400; k++) {
+				t = k * d / 360; f = t - int(t + 0.5)
+				x = 2 * 3.14159265358979 * f; y = k * G; l = x * x + y * y
+				if (f > 0 && (!p || l < lp)) { p = k; lp = l }
+				if (f < 0 && (!m || l < lm)) { m = k; lm = l }
+			}
+			print (p < m ? p " " m : m " " p)
+		}' "$OUT/stdout")
+	assert "parastichies-meristem: $want" 'grep -qx "parastichies-meristem: $want" $OUT/stdout'
+	end
+done
+try "--info: alternate leaves have no pair at the meristem" px --info scenes/distichous.cfg
+assert "parastichies-meristem: none" 'grep -qx "parastichies-meristem: none" $OUT/stdout'
 end
 try "the golden angle makes no rays" px --info "$SUN"
 assert "no rays line, no warning" '! grep -q "^rays:" $OUT/stdout && [ ! -s $OUT/stderr ]'

@@ -31,6 +31,24 @@ assert "one line" '[ $(wc -l <$OUT/stderr) -eq 1 ]'
 assert "names the object at its scene's line" 'grep -q "^phyllo-export: tests/regress/planar/vogel90.cfg:[0-9]*: warning: organ object \"Seed\" has no mesh (organs.mesh names an OBJ file): a placeholder stands in$" $OUT/stderr'
 end
 
+# A scene copied without its organs/ folder: --info still measures it
+# (only the glTF's size needs the meshes); --gltf needs them.
+mkdir -p "$OUT/alone"
+cp scenes/sunflower.cfg "$OUT/alone/"
+try "--info of a scene whose meshes are missing: a warning, the rest measured" px --info "$OUT/alone/sunflower.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the parastichies" 'grep -qx "parastichies: 55 89" $OUT/stdout'
+assert "the sizes but the glTF's" 'grep "^output-bytes: " $OUT/stdout | grep -q " csv " && ! grep "^output-bytes: " $OUT/stdout | grep -q gltf'
+assert "a warning a missing mesh, saying what is skipped" '[ $(grep -c "warning: mesh .*No such file or directory: the glTF.s size is not estimated$" $OUT/stderr) -eq 6 ]'
+end
+try "--gltf of it is an error at the mesh's line" px --gltf -o "$OUT/alone.glb" "$OUT/alone/sunflower.cfg"
+assert "exit 1, nothing written" '[ $rc -eq 1 ] && [ ! -e $OUT/alone.glb ]'
+assert "names the mesh" 'grep -q "^phyllo-export: $OUT/alone/sunflower.cfg:[0-9]*: mesh $OUT/alone/organs/seed.obj of organ object \"Seed\": No such file or directory$" $OUT/stderr'
+end
+try "--info of the scene with its meshes estimates the glTF too" px --info scenes/sunflower.cfg
+assert "gltf among the sizes" 'grep "^output-bytes: " $OUT/stdout | grep -q " gltf [0-9]"'
+end
+
 printf 'model = "planar";\ncount = "10 + 20 * F";\norgans = ( { object = "Seed"; mesh = "../../../tests/gltf/arrow.obj"; } );\n' >"$OUT/grow.cfg"
 try "--frames 3: one .glb a frame, named by -o's %d, each its frame's organs" px --gltf --frames 3 -o "$OUT/grow%d.glb" "$OUT/grow.cfg"
 assert "exit 0, nothing on stderr" '[ $rc -eq 0 ] && [ ! -s $OUT/stderr ]'

@@ -43,6 +43,12 @@ end() {
 	fi
 }
 
+# no_tmp DIR: no temporary file of -o's (FILE.phyllo-export-PID.tmp)
+# is left in DIR.
+no_tmp() {
+	[ -z "$(ls -A "$1" | grep '\.phyllo-export-[0-9]*\.tmp$')" ]
+}
+
 # csv_close A B [TOL]: same CSV, numbers equal within TOL, 1e-8 (our 9
 # digits print to 5e-9), relative
 # to max(1, |value|)); text fields must match exactly.

@@ -28,7 +28,7 @@ limited() {
 # untouched: -o's target as it was, and no temporary file beside it.
 untouched() {
 	assert "-o target untouched" '[ "$(cat "$OUT/target")" = precious ]'
-	assert "no temporary file left" '[ -z "$(ls -A "$OUT" | grep "^\.")" ]'
+	assert "no temporary file left" 'no_tmp "$OUT"'
 }
 
 # refused_under_limits WHAT STATUS PATTERN ARGS: run ARGS -o target
@@ -237,7 +237,7 @@ for o in "$OUT/my.cfg" "$OUT/dir/../my.cfg" "$OUT/link.cfg" "$OUT/hard.cfg"; do
 	try "-o $o, the scene file, is a usage error" px --pov -o "$o" "$OUT/my.cfg"
 	refused "would replace $OUT/my.cfg, the scene file"
 	assert "the scene is as it was" 'cmp -s $OUT/my.cfg $OUT/my.orig'
-	assert "nothing on stdout, no temporary file" '[ ! -s $OUT/stdout ] && [ -z "$(ls -A $OUT | grep "^\.")" ]'
+	assert "nothing on stdout, no temporary file" '[ ! -s $OUT/stdout ] && no_tmp $OUT'
 	end
 done
 cp tests/regress/compound/tree.cfg tests/regress/compound/mid.cfg "$OUT/"
@@ -257,6 +257,40 @@ try "--frames: -o whose frame 2 is the scene is a usage error" px --pov --frames
 refused "would replace $OUT/s2.cfg, the scene file"
 assert "no frame written" '[ ! -e $OUT/s1.cfg ] && [ ! -e $OUT/s3.cfg ]'
 end
+
+# Every input of a run, tried as -o by every writer: the scene, a part's
+# scene, the template in use, an organ mesh and its material library,
+# and the templates the program ships (installed, and the source files
+# of this build's built-in ones, which make would embed next time).
+mkdir -p "$OUT/all/parts"
+cp tests/gltf/arrow.obj tests/gltf/arrow.mtl "$OUT/all/"
+cp templates/pov.tmpl "$OUT/all/my.tmpl"
+printf 'model = "planar";\ncount = 4;\norgans = ( { object = "Leaf"; mesh = "../arrow.obj"; } );\n' >"$OUT/all/parts/bud.cfg"
+printf 'model = "planar";\ncount = 6;\norgans = ( { object = "Arrow"; to = 2; mesh = "arrow.obj"; },\n  { object = "Tuft"; from = 3; scene = "parts/bud.cfg"; } );\n' >"$OUT/all/all.cfg"
+(cd "$OUT/all" && sha256sum all.cfg parts/bud.cfg arrow.obj arrow.mtl my.tmpl) >"$OUT/all.sums"
+(sha256sum templates/*.tmpl) >"$OUT/templates.sums"
+# Should the protection fail, the tree's templates are put back.
+mkdir -p "$OUT/templates.orig" && cp templates/*.tmpl "$OUT/templates.orig/"
+# (Under valgrind, two writers: the check is one and the same code.)
+writers="pov blender gltf csv svg info settings cfg"
+[ -n "$RUN" ] && writers="pov csv"
+for w in $writers; do
+	tmpl=
+	[ $w = pov ] && tmpl="--template $OUT/all/my.tmpl"
+	for f in all.cfg parts/bud.cfg arrow.obj arrow.mtl ${tmpl:+my.tmpl} ../../../../templates/$w.tmpl; do
+		[ -e "$OUT/all/$f" ] || continue
+		# shellcheck disable=SC2086
+		try "--$w -o $f, an input of the run, is a usage error" px --$w $tmpl -o "$OUT/all/$f" "$OUT/all/all.cfg"
+		refused "would replace"
+		assert "every input as it was" '(cd $OUT/all && sha256sum -c --quiet ../all.sums) && sha256sum -c --quiet $OUT/templates.sums'
+		end
+	done
+done
+try "-o refuses the source tree's templates/pov.tmpl, which make embeds" px --csv -o templates/pov.tmpl "$OUT/all/all.cfg"
+refused "would replace .*templates/pov.tmpl, a template phyllo-export is built from"
+end
+sha256sum -c --quiet "$OUT/templates.sums" >/dev/null 2>&1 ||
+	cp "$OUT/templates.orig/"*.tmpl templates/
 
 # -o through a link writes the link's target; an existing file keeps
 # its permissions.

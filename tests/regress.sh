@@ -66,6 +66,6 @@ for f in tests/regress/*/*.cfg tests/regress/*/*.tmpl; do
 	assert "nothing on stdout" '[ ! -s $OUT/stdout ]'
 	assert "message as in $base.err" 'diff -u "$base.err" "$OUT/stderr" >"$OUT/diff"'
 	assert "-o target untouched" '[ "$(cat "$OUT/target")" = precious ]'
-	assert "no temporary file left" '[ -z "$(ls -A "$OUT" | grep "^\.target")" ]'
+	assert "no temporary file left" 'no_tmp "$OUT"'
 	end
 done

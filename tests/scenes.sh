@@ -70,8 +70,40 @@ if command -v python3 >/dev/null; then
 		px --csv "$cfg" >"$OUT/d.csv"
 		try "scene $cfg: its parastichies drawn as spirals of one family each, counted apart, with a key" \
 			python3 tests/svgcheck.py "$OUT/d.svg" "$OUT/d.csv" $objs
+		assert "all as it should be: $(head -c 300 $OUT/stdout)" '[ $rc -eq 0 ] && [ ! -s $OUT/stdout ]'
+		end
+	done
+	# The same of every other picture the suite makes: the regression
+	# cases' (their goldens too), a sweep of the divergence (137.7 has
+	# 115 at the rim) and an emerged head's.
+	for cfg in tests/regress/*/*.cfg; do
+		[ -f "${cfg%.cfg}.svg" ] || continue
+		objs=$(px --info "$cfg" | sed -n 's/^objects: //p')
+		px --csv "$cfg" >"$OUT/d.csv"
+		try "${cfg%.cfg}.svg, the golden file: its parastichies as they should be" \
+			python3 tests/svgcheck.py "${cfg%.cfg}.svg" "$OUT/d.csv" $objs
 		assert "all as it should be" '[ $rc -eq 0 ] && [ ! -s $OUT/stdout ]'
 		end
+	done
+	objs=$(px --info scenes/sunflower.cfg | sed -n 's/^objects: //p')
+	for a in 137.3 137.45 137.7 138; do
+		px --svg --set divergence=$a scenes/sunflower.cfg >"$OUT/d.svg" 2>/dev/null
+		px --csv --set divergence=$a scenes/sunflower.cfg >"$OUT/d.csv" 2>/dev/null
+		try "sunflower at divergence $a: its parastichies as they should be" \
+			python3 tests/svgcheck.py "$OUT/d.svg" "$OUT/d.csv" $objs
+		assert "all as it should be" '[ $rc -eq 0 ] && [ ! -s $OUT/stdout ]'
+		end
+	done
+	for g in 0.01 0.002; do
+		printf 'model = "inhibition";\ncount = 600;\ninhibition = { growth = %s; radii = "%s"; };\n' $g vogel >"$OUT/inh.cfg"
+		for radii in vogel grown; do
+			px --svg --set inhibition.radii="\"$radii\"" "$OUT/inh.cfg" >"$OUT/d.svg"
+			px --csv --set inhibition.radii="\"$radii\"" "$OUT/inh.cfg" >"$OUT/d.csv"
+			try "an emerged head at G = $g, radii $radii: its parastichies as they should be" \
+				python3 tests/svgcheck.py "$OUT/d.svg" "$OUT/d.csv" Organ
+			assert "all as it should be" '[ $rc -eq 0 ] && [ ! -s $OUT/stdout ]'
+			end
+		done
 	done
 else
 	skip "python3 not found: the SVG's parastichies"

@@ -1,13 +1,17 @@
 # svgcheck.py - what --svg's parastichies must be, read back from the
 # SVG itself: every path follows one family f through organ centres
 # (each point a circle's centre, each step f organs on where the organs
-# have an order), in chains of two steps at least that are spirals, not
-# zig-zags -- along a chain the organs turn one way about the axis and
-# move one way along the structure (up the unrolled page; out from the
-# middle from above), in the model's own positions from --csv -- no
-# path is empty, a colour stands for one family, the family counts
-# drawn do not overlap, and the key names every organ object beside a
-# disc of its colour.  Usage:
+# have an order), in chains of two steps at least (one only in a family
+# that has no longer chain, a zone too short to hold two) that are
+# spirals, not zig-zags -- along a chain the organs turn one way about
+# the axis and move one way along the structure (up the unrolled page;
+# out from the middle from above), in the model's own positions from
+# --csv -- no path is empty, a colour stands for one family, the
+# legend's families are exactly the families drawn, on a head whose
+# first organs are its centre the smallest family's spirals start there
+# (not in a ring of short arcs round it), the family counts drawn do not
+# overlap, and the key names every organ object beside a disc of its
+# colour.  Usage:
 #   python3 svgcheck.py FILE.svg FILE.csv OBJECT...
 # Prints what is wrong and exits 1, or prints nothing.
 import csv
@@ -52,6 +56,7 @@ for x, y, size, fill, words in texts:
             wrong.append("colour %s names families %d and %s"
                          % (fill, family[fill], words))
 
+chains = {}     # family: its chains, as organ indices
 for p in root.iter(NS + "path"):
     d, colour = p.get("d"), p.get("stroke")
     if not d or not d.strip():
@@ -71,7 +76,8 @@ for p in root.iter(NS + "path"):
             wrong.append("family %d: a point that is no organ's centre"
                          % f)
             continue
-        if len(ix) < 3:
+        chains.setdefault(f, []).append(ix)
+        if len(ix) < 2:
             wrong.append("family %d: a chain of %d organs" % (f, len(ix)))
         if ordered and any(b - a != f for a, b in zip(ix, ix[1:])):
             wrong.append("family %d: steps %s" % (
@@ -86,6 +92,36 @@ for p in root.iter(NS + "path"):
             if any(x > 0 for x in steps) and any(x < 0 for x in steps):
                 wrong.append("family %d %s both ways along organs %s..."
                              % (f, what, ix[:4]))
+
+for f, cs in chains.items():
+    if any(len(c) < 3 for c in cs) and any(len(c) >= 3 for c in cs):
+        wrong.append("family %d: a chain of 2 organs beside longer ones" % f)
+
+# The legend's families: the numbers on its "families:" line.
+line = [t for t in texts if t[4] == "families:"]
+if line:
+    y0 = line[0][1]
+    keyed_families = {int(words) for x, y, size, fill, words in texts
+                      if words.isdigit() and abs(y - y0) < 1e-9 * max(1, abs(y0))}
+    for f in sorted(keyed_families - set(chains)):
+        wrong.append("the legend lists family %d, which is not drawn" % f)
+    for f in sorted(set(chains) - keyed_families):
+        wrong.append("family %d is drawn but not in the legend" % f)
+elif chains:
+    wrong.append("families drawn but no families line in the legend")
+
+# A head seen from above whose first organs are its middle: the
+# smallest family's spirals run from there.
+if ordered and chains and not unrolled and len(organs) > 1:
+    mx = sum(x for x, y, fill in organs) / len(organs)
+    my = sum(y for x, y, fill in organs) / len(organs)
+    r0 = math.hypot(organs[0][0] - mx, organs[0][1] - my)
+    rn = math.hypot(organs[-1][0] - mx, organs[-1][1] - my)
+    f = min(chains)
+    if r0 < rn and not any(c[0] < f for c in chains[f]):
+        wrong.append("family %d: no spiral starts at the centre (organs "
+                     "0 to %d): they start at %s" % (f, f - 1, sorted(
+                         c[0] for c in chains[f])[:6]))
 
 # The counts drawn (not the legend's key): their boxes apart.
 labels = [(x, y - 0.7 * size, 0.56 * size * len(words), 0.7 * size)

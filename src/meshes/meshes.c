@@ -11,9 +11,8 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "compat/compat.h"
 #include "scene/compound.h"
 #include "diag.h"
 #include "mem.h"
@@ -23,8 +22,7 @@
 
 /* A file read this run. */
 struct read {
-	dev_t		 dev;
-	ino_t		 ino;
+	struct sys_id	 id;
 	struct mesh	*mesh;		/* apart: the list grows */
 };
 
@@ -40,12 +38,12 @@ library_read(const char *path)
 /* The mesh in the file at path, read unless it was; NULL after a
  * diagnostic. */
 static const struct mesh *
-mesh_at(const char *path, const struct stat *st)
+mesh_at(const char *path, const struct sys_stat *st)
 {
 	struct mesh *m;
 
 	for (size_t i = 0; i < nreads; i++)
-		if (reads[i].dev == st->st_dev && reads[i].ino == st->st_ino)
+		if (SYS_SAME(reads[i].id, st->id))
 			return reads[i].mesh;
 	m = xcalloc(1, sizeof(*m));
 	if (obj_load(m, path, library_read) != 0) {
@@ -53,7 +51,7 @@ mesh_at(const char *path, const struct stat *st)
 		return NULL;
 	}
 	reads = xreallocarray(reads, nreads + 1, sizeof(*reads));
-	reads[nreads++] = (struct read){ st->st_dev, st->st_ino, m };
+	reads[nreads++] = (struct read){ st->id, m };
 	return m;
 }
 
@@ -74,13 +72,13 @@ struct named {
 	char		*file;		/* the path read, owned */
 	const char	*scene;		/* the scene naming it */
 	int		 line;
-	dev_t		 dev;
-	ino_t		 ino;
+	struct sys_id	 id;
 };
 
 /* Object j of part p's mesh, added to M unless its name has it. */
 static int
-add(struct meshes *M, struct named *at, const struct part *p, size_t j)
+add(struct meshes *M, struct named *at, const struct part *p, size_t j,
+    unsigned flags)
 {
 	const struct scene *sc = &p->sc;
 	const char *name = sc->objects[j];
@@ -88,39 +86,41 @@ add(struct meshes *M, struct named *at, const struct part *p, size_t j)
 	char *path = compound_resolve(p->file, sc->object_mesh[j]);
 	const struct mesh *mesh;
 	const char *why;
-	struct stat st;
+	struct sys_stat st;
 	size_t i;
 
 	/* A FIFO would wait for a writer for ever. */
-	why = stat(path, &st) != 0 ? strerror(errno) :
-	    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
-	    !S_ISREG(st.st_mode) ? "not a regular file" :
-	    access(path, R_OK) != 0 ? strerror(errno) : NULL;
+	why = sys_stat(path, &st) != 0 ? strerror(errno) :
+	    st.kind == SYS_DIR ? strerror(EISDIR) :
+	    st.kind != SYS_REG ? "not a regular file" :
+	    !sys_readable(path) ? strerror(errno) : NULL;
 	if (why != NULL) {
-		diag(ST_SCENE, sc->file, line, 0, "mesh %s of organ object "
-		    "\"%s\": %s", path, name, why);
+		/* --info wants the rest: only the glTF's size needs it. */
+		diag(flags & MESH_SIZES ? ST_OK : ST_SCENE, sc->file, line, 0,
+		    "mesh %s of organ object \"%s\": %s%s", path, name, why,
+		    flags & MESH_SIZES ? ": the glTF's size is not estimated" :
+		    "");
 		free(path);
-		return -1;
+		M->missing = 1;
+		return flags & MESH_SIZES ? 0 : -1;
 	}
 	for (i = 0; i < M->n; i++)
 		if (strcmp(M->m[i].name, name) == 0)
 			break;
 	if (i < M->n) {
-		if (at[i].dev != st.st_dev || at[i].ino != st.st_ino)
+		if (!SYS_SAME(at[i].id, st.id))
 			diag(ST_SCENE, sc->file, line, 0, "organ object \"%s\" "
 			    "has mesh %s here but %s in %s: one name, one "
 			    "thing", name, path, at[i].file, at[i].scene);
 		free(path);
-		return at[i].dev != st.st_dev || at[i].ino != st.st_ino ?
-		    -1 : 0;
+		return SYS_SAME(at[i].id, st.id) ? 0 : -1;
 	}
 	if ((mesh = mesh_at(path, &st)) == NULL) {
 		free(path);
 		return -1;
 	}
 	M->m[M->n] = (struct object_mesh){ name, mesh };
-	at[M->n++] = (struct named){ path, sc->file, line, st.st_dev,
-	    st.st_ino };
+	at[M->n++] = (struct named){ path, sc->file, line, st.id };
 	return 0;
 }
 
@@ -170,13 +170,13 @@ warn_bare(const struct meshes *M, const struct compound *C)
 }
 
 int
-meshes_load(struct meshes *M, struct compound *C, int warn)
+meshes_load(struct meshes *M, struct compound *C, unsigned flags)
 {
 	struct named *at;
 	size_t most = 0;
 	int rc = 0;
 
-	*M = (struct meshes){ NULL, 0 };
+	*M = (struct meshes){ NULL, 0, 0 };
 	for (size_t i = 0; i < C->n; i++)
 		most += C->parts[i]->sc.nobjects;
 	M->m = xcalloc(most, sizeof(*M->m));
@@ -186,14 +186,14 @@ meshes_load(struct meshes *M, struct compound *C, int warn)
 
 		for (size_t j = 0; j < sc->nobjects && rc == 0; j++)
 			if (sc->object_mesh[j] != NULL)
-				rc = add(M, at, C->parts[i], j);
+				rc = add(M, at, C->parts[i], j, flags);
 	}
 	for (size_t i = 0; i < M->n; i++)
 		free(at[i].file);
 	free(at);
 	if (rc != 0)
 		return -1;
-	if (warn)
+	if (flags & MESH_WARN)
 		warn_bare(M, C);
 	for (size_t i = 0; i < C->n; i++)
 		C->parts[i]->res.meshes = M;
@@ -213,7 +213,7 @@ void
 meshes_free(struct meshes *M)
 {
 	free(M->m);
-	*M = (struct meshes){ NULL, 0 };
+	*M = (struct meshes){ NULL, 0, 0 };
 }
 
 void
@@ -233,6 +233,7 @@ meshes_inputs(const struct compound *C)
 			snprintf(what, sizeof(what), "the mesh of organ object "
 			    "\"%s\"", p->sc.objects[j]);
 			output_input(path, what);
+			obj_libraries(path, library_read);
 			free(path);
 		}
 	}

@@ -21,14 +21,19 @@ struct object_mesh {
 struct meshes {
 	struct object_mesh *m;
 	size_t		 n;
+	int		 missing;	/* MESH_SIZES: a file not there */
 };
+
+#define MESH_WARN	0x1	/* say which plain objects have none */
+#define MESH_SIZES	0x2	/* only for sizes: a file not there is a
+				   warning, and M->missing says so */
 
 /*
  * Read the meshes C's scenes name into M and point every result of C
- * at M (result.meshes); with warn, say which plain objects have none.
- * 0, or -1 after a diagnostic.
+ * at M (result.meshes), as flags (MESH_*) say.  0, or -1 after a
+ * diagnostic.
  */
-int	meshes_load(struct meshes *M, struct compound *C, int warn);
+int	meshes_load(struct meshes *M, struct compound *C, unsigned flags);
 /* Object name's mesh, or NULL: it has none (a placeholder stands in). */
 const struct mesh *meshes_find(const struct meshes *, const char *name);
 void	meshes_free(struct meshes *);

@@ -14,11 +14,11 @@
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "compat/compat.h"
 #include "scene/cfgtext.h"
 #include "diag.h"
 #include "mem.h"
@@ -285,14 +285,29 @@ smoothing(struct obj *O, const char *p, const char *end)
 	return 0;
 }
 
+/* The file an mtllib line names, p to end, in dir (with its '/'). */
+static char *
+library_path(const char *dir, const char *p, const char *end)
+{
+	size_t n = (size_t)(end - p), dn;
+	char *path = xmalloc(strlen(dir) + n + 1);
+
+	memcpy(path, p, n);
+	path[n] = '\0';
+	dn = sys_absolute(path) ? 0 : strlen(dir);
+	memmove(path + dn, path, n + 1);
+	memcpy(path, dir, dn);
+	return path;
+}
+
 /* mtllib FILE: its materials, read beside the OBJ file. */
 static int
 material_library(struct obj *O, const char *p, const char *end)
 {
 	char *path, *text, q[600];
 	const char *why;
-	size_t n, dn, len;
-	struct stat st;
+	size_t len;
+	struct sys_stat st;
 	int rc;
 
 	p = objtext_skip(p, end);
@@ -303,17 +318,12 @@ material_library(struct obj *O, const char *p, const char *end)
 		    "file");
 	if (O->dir == NULL)
 		return 0;
-	n = (size_t)(end - p);
-	dn = *p == '/' ? 0 : strlen(O->dir);
-	path = xmalloc(dn + n + 1);
-	memcpy(path, O->dir, dn);
-	memcpy(path + dn, p, n);
-	path[dn + n] = '\0';
+	path = library_path(O->dir, p, end);
 	/* A library that cannot be read leaves the colours to us. */
-	why = stat(path, &st) != 0 ? strerror(errno) :
-	    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
-	    !S_ISREG(st.st_mode) ? "not a regular file" :
-	    access(path, R_OK) != 0 ? strerror(errno) : NULL;
+	why = sys_stat(path, &st) != 0 ? strerror(errno) :
+	    st.kind == SYS_DIR ? strerror(EISDIR) :
+	    st.kind != SYS_REG ? "not a regular file" :
+	    !sys_readable(path) ? strerror(errno) : NULL;
 	if (why != NULL) {
 		cfgtext_quote(q, sizeof(q), path);
 		diag(ST_OK, O->at.file, O->at.line, 0, "material library "
@@ -526,17 +536,55 @@ obj_parse(struct mesh *m, const char *file, const char *text, size_t len,
 	return rc;
 }
 
-int
-obj_load(struct mesh *m, const char *path, obj_read_fn *told)
+/* The directory of path, with its '/', or "". */
+static char *
+dir_of(const char *path)
 {
-	const char *slash = strrchr(path, '/');
-	size_t dn = slash != NULL ? (size_t)(slash - path + 1) : 0;
-	char *text, *dir = xmalloc(dn + 1);
-	size_t len;
-	int rc;
+	size_t dn = (size_t)(sys_base(path) - path);
+	char *dir = xmalloc(dn + 1);
 
 	memcpy(dir, path, dn);
 	dir[dn] = '\0';
+	return dir;
+}
+
+void
+obj_libraries(const char *path, obj_read_fn *told)
+{
+	char line[4096], *dir;
+	FILE *fp;
+
+	if ((fp = sys_fopen(path, "rb")) == NULL)
+		return;
+	dir = dir_of(path);
+	while (fgets(line, sizeof(line), fp) != NULL) {
+		const char *p = objtext_skip(line, line + strlen(line));
+		const char *end = line + strlen(line), *w;
+		char *lib;
+		struct sys_stat st;
+
+		if (strncmp(p, "mtllib", 6) != 0 || !objtext_blank(p[6]))
+			continue;
+		while (end > p && (objtext_blank(end[-1]) || end[-1] == '\n'))
+			end--;
+		if ((w = objtext_skip(p + 6, end)) == end)
+			continue;
+		lib = library_path(dir, w, end);
+		if (sys_stat(lib, &st) == 0 && st.kind == SYS_REG)
+			told(lib);
+		free(lib);
+	}
+	free(dir);
+	fclose(fp);
+}
+
+int
+obj_load(struct mesh *m, const char *path, obj_read_fn *told)
+{
+	char *text, *dir = dir_of(path);
+	size_t len;
+	int rc;
+
 	rc = objtext_read(path, OBJ_BYTES_MAX, "OBJ file", &text, &len);
 	if (rc == 0)
 		rc = parse_text(m, path, text, len, dir, told);

@@ -21,6 +21,12 @@ typedef void obj_read_fn(const char *path);
  */
 int	obj_load(struct mesh *m, const char *path, obj_read_fn *told);
 /*
+ * Tell told each material library the OBJ file at path names and that
+ * exists, without reading the mesh: what -o must not name though the
+ * format reads no meshes.  Quiet: a file that cannot be read has none.
+ */
+void	obj_libraries(const char *path, obj_read_fn *told);
+/*
  * The same from len bytes of text (no NUL needed), messages naming
  * file; mtllib lines are only checked, not read, unless dir is given:
  * the directory (with its '/', or "") their files are relative to.

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "compat/compat.h"
 #include "scene/cfgtext.h"
 #include "diag.h"
 #include "mem.h"
@@ -129,13 +130,18 @@ objtext_nul_line(const char *text, size_t len)
 }
 
 
+/*
+ * The buffer starts at the file's size and grows as it must (a file
+ * may grow, or say size 0), not at max: Windows commits every byte
+ * asked for, and wine wrote all 64 MiB of it, 0.15 s a mesh.
+ */
 int
 objtext_read(const char *path, long max, const char *what,
     char **text, size_t *len)
 {
-	FILE *fp = fopen(path, "rb");
+	FILE *fp = sys_fopen(path, "rb");
 	struct stat st;
-	size_t got;
+	size_t got = 0, cap = 65536, n;
 
 	*text = NULL;
 	*len = 0;
@@ -143,14 +149,24 @@ objtext_read(const char *path, long max, const char *what,
 		diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));
 		return -1;
 	}
-	if (fstat(fileno(fp), &st) == 0 && st.st_size > max) {
+	if (fstat(fileno(fp), &st) != 0)
+		st.st_size = 0;
+	if (st.st_size > max) {
 		fclose(fp);
 		diag(ST_SCENE, path, 0, 0, "%s is larger than %ld bytes", what,
 		    max);
 		return -1;
 	}
-	*text = xmalloc((size_t)max + 2);
-	got = fread(*text, 1, (size_t)max + 1, fp);
+	if (st.st_size > 0 && (size_t)st.st_size + 2 > cap)
+		cap = (size_t)st.st_size + 2;
+	*text = xmalloc(cap);
+	while ((n = fread(*text + got, 1, cap - 1 - got, fp)) > 0 &&
+	    (got += n) <= (size_t)max)
+		if (got == cap - 1) {
+			cap = cap * 2 < (size_t)max + 2 ? cap * 2 :
+			    (size_t)max + 2;
+			*text = xreallocarray(*text, cap, 1);
+		}
 	if (ferror(fp) || got > (size_t)max) {
 		if (ferror(fp))
 			diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));

@@ -7,6 +7,8 @@
 
 #include <stddef.h>
 
+#include "compat/compat.h"
+
 /* Where a message points: the file, and the line being read. */
 struct objtext {
 	const char	*file;
@@ -20,9 +22,7 @@ const char *objtext_skip(const char *p, const char *end);
 const char *objtext_word_end(const char *p, const char *end);
 /* An error at the line being read; always -1. */
 int	 objtext_fail(const struct objtext *, const char *fmt, ...)
-#if defined(__GNUC__)
-	    __attribute__((format(printf, 2, 3)))
-#endif
+	    PRINTFLIKE(2, 3)
 	    ;
 /* The text from p to end (a few words at most), quoted for a message. */
 void	 objtext_quote(char *dst, size_t sz, const char *p, const char *end);

@@ -47,6 +47,11 @@
 #define EST_LOOSE	1.25	/* primordia take at most this times the
 				   area of a hexagonal packing (assumed:
 				   only the cells' width hangs on it) */
+#define FRONT_LOOSE	1.2	/* and about this times (the falling
+				   sphere's band of 100,000: 1.2): only
+				   the rows' height hangs on it */
+#define FALLING_MIN	20000	/* primordia expected, at least, for a
+				   map made for a falling radius */
 #define R_SMALLEST	1e-12	/* of the receptacle's size: below it the
 				   walk's steps vanish in double precision */
 
@@ -291,6 +296,54 @@ rising_est(const struct coll *C, double L)
 	return r_est;
 }
 
+/*
+ * For a radius law that falls below FALLS of the first radius (as
+ * sampled): the least radius of the primordia placed while the front
+ * crosses each of EST_SAMPLES parts of the band's length L, else NULL.
+ * The front leaves arc length s when the primordia placed cover the
+ * area below it: the first m whose hexagonal area, FRONT_LOOSE times,
+ * reaches it.  Only how high the cover map's rows are hangs on this,
+ * never where a primordium goes.
+ */
+static double *
+falling_est(const struct coll *C, double L, double rmin)
+{
+	double *r_front, area = 0, last = rmin;
+	size_t m = 0;
+
+	if (C->law == NULL || !(rmin < FALLS * C->law[0]))
+		return NULL;
+	r_front = xcalloc(EST_SAMPLES, sizeof(*r_front));
+	for (int i = 0; i < EST_SAMPLES; i++) {
+		/* The area below the part's end. */
+		double below = curve_area(&C->cv, curve_t(&C->cv, L * (i + 1) /
+		    EST_SAMPLES)), least = HUGE_VAL;
+
+		for (; m < C->nlaw; m++) {
+			double r = C->law[m] < HUGE_VAL ? C->law[m] : 0;
+
+			least = fmin(least, r);
+			area += FRONT_LOOSE * 2 * sqrt(3) * r * r *
+			    (double)C->law_step;
+			if (!(area < below))
+				break;
+		}
+		if (m < C->nlaw)
+			r_front[i] = last = least;
+		else
+			/*
+			 * Past the last primordium: the front gets there in
+			 * a looser packing, when the radius is the last, as
+			 * far as EST_LOOSE times the hexagonal area; beyond
+			 * that, rows four times as high (not expected to be
+			 * met; the band is mapped twice over).
+			 */
+			r_front[i] = below <= EST_LOOSE / FRONT_LOOSE * area ?
+			    fmin(least, last) : 4 * fmin(least, last);
+	}
+	return r_front;
+}
+
 /* Placement with radius rconst if > 0, at most cap primordia if > 0. */
 static int
 place(const struct model_ctx *ctx, struct result *res, int how,
@@ -342,7 +395,7 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		 * packing, and some rows more.
 		 */
 		double s = C.cv.length, most = (double)N * CELLS_PER_ORGAN;
-		double *r_est;
+		double *r_est, *r_front;
 
 		if (2 * band < C.cv.area)
 			s = curve_s(&C.cv, curve_t_area(&C.cv, 2 * band, NULL,
@@ -380,8 +433,22 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 			C.finer = 1;
 		}
 		r_est = rising_est(&C, fmin(s, C.cv.length));
-		cover_init(&C.cover, &C.cv, rmin, s, most, r_est, EST_SAMPLES);
+		/*
+		 * Rows as high as a falling radius wants, where the walks
+		 * start near the front (epsilon): a walk from the base
+		 * would cross high rows long after, at a radius their
+		 * bounds are too coarse for.  Not for a few thousand
+		 * primordia: the run takes milliseconds either way, and
+		 * other rows move placements by rounding (the coneflower's:
+		 * a frame's component of 0 became -2.8e-17).
+		 */
+		r_front = P->epsilon.e != NULL && (double)N * fmin(1,
+		    C.cv.area / band) >= FALLING_MIN ? falling_est(&C, fmin(s,
+		    C.cv.length), rmin) : NULL;
+		cover_init(&C.cover, &C.cv, rmin, s, most, r_est, r_front,
+		    EST_SAMPLES);
 		free(r_est);
+		free(r_front);
 	}
 	/*
 	 * Room for as many as circles of radius r would pack hexagonally,
@@ -458,6 +525,8 @@ place(const struct model_ctx *ctx, struct result *res, int how,
 		result_info(res, "cover misses", 1, (double)cover_check(&C.cover,
 		    &C.cv, C.rmax, CHECK_EVERY, coll_near_point, &C));
 		result_info(res, "cover doubled", 1, (double)C.finer);
+		result_info(res, "cover levels", 1, C.nocover ? 0 :
+		    (double)C.cover.levels);
 	}
 	rc = 0;
 out:

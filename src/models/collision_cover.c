@@ -85,6 +85,44 @@
  * 300,000, the sphere to the tip) stay over 1.5 times the dome with
  * every needless look spared: the looks are not the only cost.
  *
+ * So rows need not all be r_min high.  With a falling radius the rows
+ * the front crosses early, under large primordia, are as high as
+ * CELL_FRAC of the radius expected there (runs of 8 rows, each run's
+ * bounds in steps of its own q, a power of 2 times the lowest rows';
+ * its columns as much wider): cover_add() then writes some 20 to 45
+ * cells a primordium, as on the dome, where cells of 0.6 r_min had it
+ * write up to 200.  Used where the walks start near the front
+ * (epsilon); a walk from the base crosses those rows later, at a
+ * radius their bounds are far too coarse for.  Its start row is then
+ * often not covered where the walk starts, and it looks at the row's
+ * start before working its start out (collision_walk.c).  Measured,
+ * instructions a primordium (callgrind), falling radius and epsilon r,
+ * 100,000 / 300,000 / to the tip: disk 10,570 / 13,570 / 14,367 ->
+ * 8,101 / 9,038 / 10,453, hemisphere 10,608 / 12,149 / 13,699 -> 8,076
+ * / 8,862 / 10,065, sphere 15,278 / 14,449 / 14,914 -> 10,606 / 10,370
+ * / 10,140 (the dome: 7,606 -> 7,647).  Rows of 0.5 or 0.45 of the
+ * radius, or columns as wide as the rows are high, cost more.
+ *
+ * For the walks from the base, the rows below the front would need
+ * their room kept otherwise than in bounds.  Tried, and kept on the
+ * branch collision53-holes, not here: each primordium's cell of the
+ * power diagram weighted (r + c)^2, c under every radius to come, cut
+ * as a polygon in its tangent plane once its neighbours hem it in (in
+ * it, room for r >= c is exactly where it is r_m + r from m), tiles
+ * marked by primordia not yet closed, and walks that look, below the
+ * rows no open primordium can reach, only where a cell's polygon cut
+ * to their meridian's strip reaches r_m + r.  Exact (the reference and
+ * the plain walk agree; a check that every point with room lies in a
+ * hole catches polygons shrunk 3%), but the falling sphere's 100,000
+ * took 2.09 s against 0.44 s: the packing is loose enough that 68-91%
+ * of the final cells hold room for the least radius (sphere 100,000,
+ * hemisphere 300,000, disk to the tip), so a late walk's meridian
+ * crosses some 80 cells whose room may hold it (78 read a walk, 25.6
+ * within their angles, 7.7 whose polygon reaches r on the strip: the
+ * bound at c is loose at r beside larger neighbours), and closing a
+ * primordium (a grid query of up to 150 late on, and the cuts) costs
+ * about what the looks it spares do.
+ *
  * cover_skip() on that sphere (a map of 32 MB; 55 MB to the tip, the
  * dome's 17 MB): 5.5 calls a walk, 103 tile words read, and two thirds
  * of its samples (perf) on the first word's load.  Kept per tile and
@@ -139,23 +177,31 @@ cell_u(const struct cover *cv, int32_t k, int32_t j)
 	return *cell(cv, k, j);
 }
 
+/* The level of row k: its height is a 2^level. */
 static inline int
-covered(const struct cover *cv, uint8_t u, double r)
+level(const struct cover *cv, int32_t k)
 {
-	return u != U_NONE && u * cv->q < r;
+	return cv->be[k >> 3];
 }
 
-/* The least bound in steps that is not covered for radius r. */
-static inline uint8_t
-threshold(const struct cover *cv, double r)
+/* Is bound u of a cell of level e under r? */
+static inline int
+covered(const struct cover *cv, int e, uint8_t u, double r)
 {
-	double s = ceil(r * cv->inv_q);
+	return u != U_NONE && u * cv->q[e] < r;
+}
+
+/* The least bound in steps of level e that is not covered for r. */
+static inline uint8_t
+threshold(const struct cover *cv, int e, double r)
+{
+	double s = ceil(r * cv->inv_q[e]);
 	int u = s < U_NONE ? (int)s : U_NONE;
 
 	/* As covered() decides, rounding and all. */
-	while (u > 0 && !covered(cv, (uint8_t)(u - 1), r))
+	while (u > 0 && !covered(cv, e, (uint8_t)(u - 1), r))
 		u--;
-	while (u < U_NONE && covered(cv, (uint8_t)u, r))
+	while (u < U_NONE && covered(cv, e, (uint8_t)u, r))
 		u++;
 	return (uint8_t)u;
 }
@@ -243,9 +289,29 @@ cover_rows(const struct curve *c, double r_min, double s_band,
 	return fmax(1, ceil(L / a));
 }
 
+/*
+ * How high a row from arc length s0 up may be, a the least: CELL_FRAC
+ * (frac) of the radius that r_front expects there, looked up at the
+ * row's middle.
+ */
+static double
+row_height(double a, double frac, double s0, double L, const double *r_front,
+    int n_est)
+{
+	double h = a;
+
+	for (int i = 0; i < 2; i++) {
+		int k = (int)((s0 + h / 2) / L * n_est);
+
+		h = fmax(a, frac * r_front[k < 0 ? 0 : k < n_est ? k : n_est - 1]);
+	}
+	return fmin(h, a * (double)(1 << (COVER_E - 1)));
+}
+
 void
 cover_init(struct cover *cv, const struct curve *c, double r_min,
-    double s_band, double cells_most, const double *r_est, int n_est)
+    double s_band, double cells_most, const double *r_est,
+    const double *r_front, int n_est)
 {
 	double L, W, a;
 	size_t n = 0;
@@ -255,16 +321,96 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	memset(cv, 0, sizeof(*cv));
 	a = cover_side(c, r_min, s_band, cells_most, &L, &W);
 	cv->band = L < c->length;
-	cv->a = a;
 	cv->tight = TIGHT * r_min;
-	cv->rows = (int32_t)fmax(1, ceil(L / a));
+	if (r_front != NULL) {
+		/*
+		 * Runs of 8 rows, each as high as its level, up to L, the
+		 * lowest CELL_FRAC r_min high; larger, if that would make
+		 * more than most cells (counted as if every row were as wide
+		 * as the widest, as cover_side() does, and its cells as
+		 * narrow as they may be).
+		 */
+		double most = fmin(fmax(cells_most, CELLS_MIN), CELLS_MAX), cells;
+		double frac = CELL_FRAC, a_one = a;	/* a: cover_side()'s */
+		size_t cap = 64;
+		int varied = 0;
+
+		/*
+		 * Rows no lower than one height's map would have, capped:
+		 * the columns' tables (some 45 bytes a column of the lowest
+		 * rows) would grow as the rows shrink, and on a wide thin
+		 * band (the hemisphere's rim, 100,000) outgrow the cells
+		 * saved.
+		 */
+		cv->s_row = xcalloc(cap + 1, sizeof(*cv->s_row));
+		cv->be = xcalloc(cap / 8, sizeof(*cv->be));
+		for (int tries = 0; tries < 8; tries++) {
+			cv->rows = 0;
+			cv->levels = 0;
+			cells = 0;
+			varied = 0;
+			while (cv->rows == 0 || cv->s_row[cv->rows] < L) {
+				double h[8], s0 = cv->s_row[cv->rows], most_h = a;
+				int e = 0, nr = 0;
+
+				if ((size_t)cv->rows + 8 > cap) {
+					cap *= 2;
+					cv->s_row = xreallocarray(cv->s_row, cap + 1,
+					    sizeof(*cv->s_row));
+					cv->be = xreallocarray(cv->be, cap / 8,
+					    sizeof(*cv->be));
+				}
+				/* 8 rows (fewer at the end), then their level. */
+				for (; nr < 8 && (nr == 0 || s0 < L); nr++) {
+					h[nr] = row_height(a, frac, s0, L, r_front,
+					    n_est);
+					varied |= h[nr] > a;
+					most_h = fmax(most_h, h[nr]);
+					s0 += h[nr];
+				}
+				while (a * (double)(1 << e) < most_h)
+					e++;
+				cv->be[cv->rows / 8] = (uint8_t)e;
+				cv->levels = e + 1 > cv->levels ? e + 1 :
+				    cv->levels;
+				for (int i = 0; i < nr; i++, cv->rows++) {
+					cv->s_row[cv->rows + 1] =
+					    cv->s_row[cv->rows] + h[i];
+					/* Columns may be h / sqrt 2 wide. */
+					cells += fmax(1, ceil(W / h[i] * M_SQRT2));
+				}
+			}
+			if (cells <= most)
+				break;
+			a *= sqrt(cells / most) * 1.01;
+			frac *= sqrt(cells / most) * 1.01;
+		}
+		if (!varied) {	/* all of one height after all */
+			free(cv->s_row);
+			free(cv->be);
+			a = a_one;
+		}
+	}
+	cv->a = a;
 	cv->cols = (int32_t)fmax(1, ceil(W / a));
 	/* Halvings down to 16 columns at most. */
 	for (zcap = 0; zcap + 1 < COVER_Z && cv->cols >> (zcap + 5) > 0; zcap++)
 		;
-	cv->q = a / U_STEPS;
-	cv->inv_q = U_STEPS / a;
-	cv->final = 0;
+	if (cv->levels <= 1) {
+		/* Every row a high: the rows' ends are k a, exactly. */
+		cv->rows = (int32_t)fmax(1, ceil(L / a));
+		cv->be = xcalloc((size_t)(cv->rows + 7) / 8, sizeof(*cv->be));
+		cv->s_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->s_row));
+		for (int32_t k = 0; k <= cv->rows; k++)
+			cv->s_row[k] = k * a;
+		cv->levels = 1;
+	}
+	blocks = (cv->rows + 7) / 8;
+	for (int e = 0; e < cv->levels; e++) {
+		cv->q[e] = a * (double)(1 << e) / U_STEPS;
+		cv->inv_q[e] = U_STEPS / (a * (double)(1 << e));
+		cv->final[e] = 0;
+	}
 	cover_floor(cv, r_min);
 	cv->t_row = xcalloc((size_t)cv->rows + 1, sizeof(*cv->t_row));
 	cv->rho_c = xcalloc((size_t)cv->rows, sizeof(*cv->rho_c));
@@ -275,9 +421,10 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	cv->kappa = xcalloc((size_t)cv->rows, sizeof(*cv->kappa));
 	for (int32_t k = 0; k <= cv->rows; k++)
 		cv->t_row[k] = k == cv->rows && !cv->band ? c->tmax :
-		    curve_t(c, fmin(k * a, c->length));
+		    curve_t(c, fmin(cv->s_row[k], c->length));
 	for (int32_t k = 0; k < cv->rows; k++) {
-		double s0 = k * a, s1 = fmin((k + 1) * a, c->length), p[2];
+		double s0 = cv->s_row[k], s1 = fmin(cv->s_row[k + 1], c->length);
+		double p[2];
 
 		/* Walks look here first when they come to a row. */
 		curve_eval(c, cv->t_row[k], cv->start[k], cv->start[k] + 2);
@@ -287,13 +434,25 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 		cv->h[k] = (s1 - s0) / 2;
 	}
 	row_kappa(cv, c);
-	blocks = (cv->rows + 7) / 8;
 	cv->bz = xcalloc((size_t)blocks, sizeof(*cv->bz));
 	cv->bbase = xcalloc((size_t)blocks, sizeof(*cv->bbase));
 	cv->bstride = xcalloc((size_t)blocks, sizeof(*cv->bstride));
 	for (int32_t b = 0; b < blocks; b++) {
-		double rho = 0, wide = a / 2;
+		double rho = 0, wide = a / 2, ab = 0;
 		int z = 0;
+
+		/*
+		 * Rows higher than a: as many fewer columns, as if a were
+		 * their height (the mean of the block's, to a power of 2).
+		 */
+		if (cv->levels > 1) {
+			int32_t k1 = 8 * b + 8 < cv->rows ? 8 * b + 8 : cv->rows;
+
+			ab = (cv->s_row[k1] - cv->s_row[8 * b]) / (k1 - 8 * b);
+			while (z < zcap && a * (double)(2 << z) <= ab * M_SQRT2)
+				z++;
+			wide = a * (double)(1 << z) / 2;
+		}
 
 		/*
 		 * The block's widest ring, rho within h of each middle, in
@@ -344,7 +503,7 @@ cover_init(struct cover *cv, const struct curve *c, double r_min,
 	}
 	cv->sub = xcalloc((size_t)cv->rows * COVER_SUB, sizeof(*cv->sub));
 	for (int32_t k = 0; k < cv->rows; k++) {
-		double s0 = k * a, s1 = fmin((k + 1) * a, c->length);
+		double s0 = cv->s_row[k], s1 = fmin(cv->s_row[k + 1], c->length);
 		int32_t ncol = cv->cols >> cv->bz[k >> 3];
 
 		for (int i = 0; i < COVER_SUB; i++) {
@@ -415,13 +574,17 @@ cover_floor(struct cover *cv, double r_floor)
 	 * those looks moved placements by rounding (up to 5e-13 on the
 	 * hemisphere, radius rising, to the tip).
 	 */
-	while (cv->final < U_NONE && (cv->final + 1) * cv->q < TIGHT * r_floor)
-		cv->final++;
+	for (int e = 0; e < cv->levels; e++)
+		while (cv->final[e] < U_NONE && (cv->final[e] + 1) * cv->q[e] <
+		    TIGHT * r_floor)
+			cv->final[e]++;
 }
 
 void
 cover_free(struct cover *cv)
 {
+	free(cv->be);
+	free(cv->s_row);
 	free(cv->t_row);
 	free(cv->start);
 	free(cv->rho_c);
@@ -533,7 +696,7 @@ lower_at(uint8_t *u, double inv_q, double U)
 void
 cover_lower(struct cover *cv, int32_t k, int32_t j, double U)
 {
-	lower_at(cell(cv, k, j), cv->inv_q, U);
+	lower_at(cell(cv, k, j), cv->inv_q[level(cv, k)], U);
 }
 
 /*
@@ -701,6 +864,11 @@ row_add(struct cover *cv, struct row_add *ra, int32_t k, int32_t jphi)
 
 	ra->k = k;
 	ra->zk = zk;
+	if (cv->levels > 1) {	/* else cover_add() has set them */
+		ra->q = cv->q[level(cv, k)];
+		ra->inv_q = cv->inv_q[level(cv, k)];
+		ra->final = cv->final[level(cv, k)];
+	}
 	ra->rk = cv->rho_c[k];
 	ra->dz = cv->z_c[k] - ra->z;
 	ra->reach2 = reach * reach;
@@ -777,12 +945,24 @@ cover_add(struct cover *cv, double t, int32_t row, double phi, double x,
 	 * after each cell.
 	 */
 	struct row_add ra = { .x = x, .y = y, .z = z, .r = r,
-	    .rho = sqrt(x * x + y * y), .q = cv->q, .inv_q = cv->inv_q,
-	    .final = cv->final };
+	    .rho = sqrt(x * x + y * y), .q = cv->q[0], .inv_q = cv->inv_q[0],
+	    .final = cv->final[0] };
 
-	span = rows < cv->rows ? (int32_t)rows : cv->rows;
-	k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
-	k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
+	if (cv->levels == 1) {
+		span = rows < cv->rows ? (int32_t)rows : cv->rows;
+		k0 = kq - span - 1 < 0 ? 0 : kq - span - 1;
+		k1 = kq + span + 1 >= cv->rows ? cv->rows - 1 : kq + span + 1;
+	} else {
+		/* Rows of many heights: as far in arc length, and one more. */
+		double reach = GROW * r;
+
+		for (k0 = kq; k0 > 0 && cv->s_row[kq] - cv->s_row[k0] <= reach;
+		    k0--)
+			;
+		for (k1 = kq; k1 + 1 < cv->rows && cv->s_row[k1 + 1] -
+		    cv->s_row[kq + 1] <= reach; k1++)
+			;
+	}
 	jphi = cover_col(cv, phi);
 	for (int32_t k = k0; k <= k1; k++)
 		row_add(cv, &ra, k, jphi);
@@ -806,11 +986,14 @@ prefix_next(struct cover *cv, int32_t j, int32_t k, double r)
 	while (*link >= 0) {
 		struct except *e = &cv->ex[*link];
 		uint8_t u = cell_u(cv, e->row, j);
+		int lv = level(cv, e->row);
 
-		if (covered(cv, u, r)) {
+		if (covered(cv, lv, u, r)) {
 			/* Covered since: into the prefix with the rest. */
-			if (u > cv->f[j])
-				cv->f[j] = u;
+			unsigned u0 = (unsigned)u << lv;
+
+			if (u0 > cv->f[j])
+				cv->f[j] = u0 < U_NONE ? (uint8_t)u0 : U_NONE;
 			if (cv->last[j] == *link)
 				cv->last[j] = prev;
 			*link = e->next;
@@ -871,7 +1054,10 @@ column_up(const struct cover *cv, const uint8_t *run, int32_t e, int32_t j)
 	    cell(cv, e, j);
 }
 
-/* Column j's prefix grows by n rows, the largest bound among them most. */
+/*
+ * Column j's prefix grows by n rows, the largest bound among them most
+ * steps of q[0] (U_NONE: that many or more).
+ */
 static void
 prefix_grow(struct cover *cv, int32_t j, int32_t n, uint8_t most)
 {
@@ -885,16 +1071,17 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 {
 	/* Walks mostly step a row at a time: try the next row first. */
 	int32_t k = *row, h, e;
-	int moved = 0;
+	int moved = 0, lv, varied = cv->levels > 1;
 	uint8_t lim, most = 0;
 	uint64_t below_lim, below_most;
 	const uint8_t *run;
+	unsigned most0 = 0;	/* in steps of q[0], rows of other levels */
 
 	if (cv->band && *t >= cv->t_row[cv->rows]) {
 		*row = -1;	/* unmapped: the walk goes on alone */
 		return 0;
 	}
-	if (cv->f[j] * cv->q >= r)
+	if (cv->f[j] * cv->q[0] >= r || (varied && cv->f[j] == U_NONE))
 		column_reset(cv, j);
 	if (k < 0 || k >= cv->rows || !(cv->t_row[k] <= *t))
 		/* Most walks start at the base: search up from it. */
@@ -917,10 +1104,12 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	 * side), and the prefix grows by them when the walk is at its head.
 	 */
 	if (r != cv->lim_r) {	/* once a walk */
-		cv->lim = threshold(cv, r);
+		for (int l = 0; l < cv->levels; l++)
+			cv->lim[l] = threshold(cv, l, r);
 		cv->lim_r = r;
 	}
-	lim = cv->lim;
+	lv = level(cv, k);
+	lim = cv->lim[lv];
 	below_lim = lanes(lim);
 	below_most = lanes(1);
 	run = cell(cv, k & ~7, j);
@@ -928,6 +1117,22 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 		int i = e & 7, end = cv->rows - (e & ~7) < 8 ?
 		    cv->rows - (e & ~7) : 8;
 
+		if (varied && i == 0 && level(cv, e) != lv) {
+			/*
+			 * Rows of another height: the largest bound so far
+			 * as a length, and this level's steps from here.
+			 */
+			unsigned m0 = (unsigned)most << lv;
+
+			most0 = m0 > most0 ? m0 : most0;
+			lv = level(cv, e);
+			lim = cv->lim[lv];
+			below_lim = lanes(lim);
+			/* lim >= 1: a bound of 0 is under any radius. */
+			most = (most0 >> lv) < lim ? (uint8_t)(most0 >> lv) :
+			    (uint8_t)(lim - 1);
+			below_most = lanes(most + 1u);
+		}
 		/*
 		 * A tile's eight rows at once where all are covered (a reset
 		 * column's long scan is mostly such), and the largest bound
@@ -942,7 +1147,7 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 			else if (all_below(x, below_lim)) {
 				for (int b = 0; b < 8; b++)
 					most = run[b] > most ? run[b] : most;
-				below_most = lanes(most + 1);
+				below_most = lanes(most + 1u);
 				i = 8;
 			}
 		}
@@ -955,8 +1160,12 @@ cover_skip(struct cover *cv, double *t, int32_t j, double r, int32_t *row)
 	}
 	if (e == k)
 		return moved;
-	if (k == h)
-		prefix_grow(cv, j, e - k, most);
+	if (k == h) {
+		unsigned m0 = (unsigned)most << lv;
+
+		m0 = m0 > most0 ? m0 : most0;
+		prefix_grow(cv, j, e - k, m0 < U_NONE ? (uint8_t)m0 : U_NONE);
+	}
 	return move_to(cv, t, row, e);
 }
 
@@ -967,9 +1176,9 @@ cover_check(const struct cover *cv, const struct curve *c, double r,
 	long long misses = 0, seen = 0;
 
 	for (int32_t k = 0; k < cv->rows; k++) {
-		int z = cv->bz[k >> 3];
+		int z = cv->bz[k >> 3], lv = level(cv, k);
 		int32_t ncol = cv->cols >> z;
-		double s0 = k * cv->a, s1 = fmin((k + 1) * cv->a, c->length);
+		double s0 = cv->s_row[k], s1 = fmin(cv->s_row[k + 1], c->length);
 		double rz[3][2];
 
 		for (int i = 0; i < 3; i++)
@@ -981,14 +1190,14 @@ cover_check(const struct cover *cv, const struct curve *c, double r,
 			const double *e = &cv->edge[z][2 * jz],
 			    *m = &cv->mid[z][2 * jz], *cs[3] = { e, m, e + 2 };
 
-			if (!covered(cv, u, r) || seen++ % every != 0)
+			if (!covered(cv, lv, u, r) || seen++ % every != 0)
 				continue;
 			for (int i = 0; i < 3; i++)
 				for (int b = 0; b < 3; b++) {
 					double p[3] = { rz[i][0] * cs[b][0],
 					    rz[i][0] * cs[b][1], rz[i][1] };
 
-					misses += !near(ctx, p, u * cv->q);
+					misses += !near(ctx, p, u * cv->q[lv]);
 				}
 		}
 	}

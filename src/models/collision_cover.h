@@ -8,24 +8,37 @@
 
 #define COVER_SUB	4	/* sub-cells a side, for a closer look */
 #define COVER_Z		32	/* column halvings, at most */
+#define COVER_E		8	/* row heights: a times 1, 2, .. 2^(COVER_E - 1) */
 
 /*
- * The receptacle cut into cells: rows of arc length a up the curve,
+ * The receptacle cut into cells: rows of arc length up the curve,
  * columns of equal angle about the axis.  Each cell keeps an upper
  * bound U of the clearance min_i (|p - Q_i| - r_i) over all its points
  * p, so a new primordium of radius r > U overlaps something wherever
  * it is put in the cell.  Each column keeps how many of its rows, from
  * the base up, are so covered (for every radius above f).
+ *
+ * Rows come in runs of 8, each run's rows a 2^e high (its level e),
+ * and a bound is kept in steps of q_e = a 2^e / 64: with a falling
+ * radius the rows the front passes early are as high as the radius
+ * there wants (cover_init()), not as the least radius does.
  */
 struct cover {
-	double		 a;		/* row height, arc length */
+	double		 a;		/* the lowest rows' height, arc length */
 	double		 tight;		/* bounds above this get a closer look;
 					   under it a cell is covered for
 					   every radius, for good */
-	uint8_t		 final;		/* steps 0 .. final - 1 are bounds
-					   under most of every radius to
-					   come (cover_floor()) */
+	uint8_t		 final[COVER_E];	/* per level: steps 0 ..
+					   final - 1 are bounds under most of
+					   every radius to come
+					   (cover_floor()) */
+	double		 q[COVER_E], inv_q[COVER_E];	/* per level: a
+					   bound's step, and its inverse */
+	int		 levels;	/* the levels in use: 0 .. levels - 1 */
 	int32_t		 rows, cols;
+	uint8_t		*be;		/* per 8 rows: their level */
+	double		*s_row;		/* rows + 1: arc length at each row's
+					   start, then the band's end */
 	double		*t_row;		/* rows + 1: t at each row's start,
 					   then the band's end */
 	double		(*start)[4];	/* rows: the curve's point and dp/dt
@@ -52,18 +65,20 @@ struct cover {
 	double		 sub_turn[COVER_Z][COVER_SUB][2];	/* per z:
 					   cos, sin of each sub-column's
 					   middle less the column's */
-	uint8_t		*u;		/* U in steps of q, in 8 x 8 tiles */
-	double		 q, inv_q;
+	uint8_t		*u;		/* U in steps of its row's q, in 8 x 8
+					   tiles */
 	double		(*sub)[3];	/* rows * COVER_SUB: sub-row middles
 					   (rho, z) and their cells' d */
 	int32_t		*head;		/* cols: rows covered from the base */
-	uint8_t		*f;		/* cols: the largest U among them */
+	uint8_t		*f;		/* cols: the largest U among them, in
+					   steps of q[0] (255: more, or as
+					   many) */
 	int32_t		*first, *last;	/* cols: their exceptions, or -1 */
 	struct except	*ex;		/* the pool of exceptions */
 	size_t		 nex, exmax;
 	double		 lim_r;		/* the radius of the last walk, */
-	uint8_t		 lim;		/* and the least bound it is not
-					   covered by */
+	uint8_t		 lim[COVER_E];	/* and per level the least bound it
+					   is not covered by */
 };
 
 /*
@@ -82,11 +97,14 @@ struct except {
  * most cells_most of them (fewer, coarser cells past that).  With
  * r_est, no walk of a radius under r_est[i] is expected to look at arc
  * lengths i / n_est to (i + 1) / n_est of the band (a radius that only
- * rises), and cells there may be as wide as that radius wants.
+ * rises), and cells there may be as wide as that radius wants.  With
+ * r_front, the primordia placed while the front crosses those arc
+ * lengths are expected to have radii of r_front[i] or more (a radius
+ * that falls), and rows there may be as high as that radius wants.
  */
 void	cover_init(struct cover *, const struct curve *, double r_min,
 	    double s_band, double cells_most, const double *r_est,
-	    int n_est);
+	    const double *r_front, int n_est);
 /* How many rows cover_init() would cut the band into. */
 double	cover_rows(const struct curve *, double r_min, double s_band,
 	    double cells_most);

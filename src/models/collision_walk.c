@@ -442,9 +442,10 @@ below_head(struct coll *C, int32_t k, int32_t j, double r, double t,
  * there depends on t only through its row: t0 itself is needed only
  * for a look at it.
  *
- * Row k starts at t_row[k] = curve_t(k a) (cover_init()), so t0 lies
- * in row floor(s0 / a) when curve_t() keeps the order of s0 and the
- * rows' ends.  It is the same function at both (the piece found by
+ * Row k starts at t_row[k] = curve_t(s_row[k]) (cover_init()), so t0
+ * lies in the row whose arc lengths hold s0 (floor(s0 / a) when all
+ * rows are a high) when curve_t() keeps the order of s0 and the rows'
+ * ends.  It is the same function at both (the piece found by
  * its start's arc length, then the same Newton iteration on the same
  * Gauss-Legendre sum), and it lands within about 1e-15 of the piece's
  * parameter span of that sum's root (its iteration stops on a step
@@ -462,10 +463,30 @@ start_row(const struct coll *C, double s0)
 	double x = s0 / cv->a, m = fmax(1e-6 * cv->a, 1e-12 * C->cv.length);
 	int32_t k;
 
-	if (C->nocover || !(s0 > 0 && s0 < C->cv.length) || !(x < cv->rows))
+	if (C->nocover || !(s0 > 0 && s0 < C->cv.length))
 		return -1;
-	k = (int32_t)x;
-	if (s0 - k * cv->a < m || fmin((k + 1) * cv->a, C->cv.length) - s0 < m)
+	if (cv->levels == 1) {
+		if (!(x < cv->rows))
+			return -1;
+		k = (int32_t)x;
+		if (s0 - k * cv->a < m || fmin((k + 1) * cv->a,
+		    C->cv.length) - s0 < m)
+			return -1;
+		return k;
+	}
+	if (!(s0 < cv->s_row[cv->rows]))
+		return -1;
+	for (int32_t lo = 0, hi = cv->rows - 1; ; ) {	/* s_row[lo] <= s0 */
+		k = (lo + hi + 1) / 2;
+		if (lo == hi)
+			break;
+		if (cv->s_row[k] <= s0)
+			lo = k;
+		else
+			hi = k - 1;
+	}
+	if (s0 - cv->s_row[k] < m || fmin(cv->s_row[k + 1], C->cv.length) -
+	    s0 < m)
 		return -1;
 	return k;
 }
@@ -481,7 +502,7 @@ coll_place_exact(struct coll *C, long long n, double t0, double s0,
     double phi, double c, double s, double r, int32_t *row, double p[2])
 {
 	int32_t j = C->nocover ? 0 : cover_col(&C->cover, phi), k = -1;
-	double t = t0, to;
+	double t = t0, to, below = -1;
 	struct hit hits[HITS];
 	int skipped = 0;
 
@@ -501,14 +522,25 @@ coll_place_exact(struct coll *C, long long n, double t0, double s0,
 				C->start_misses += !(C->cover.t_row[k] <= e &&
 				    e < C->cover.t_row[k + 1]);
 			}
-			if (!cover_skip(&C->cover, &t, j, r, &k))
-				t = curve_t(&C->cv, s0);
+			/*
+			 * Row k is not covered for the walk.  With rows of
+			 * many heights (collision_cover.c) that is often so, a
+			 * row too coarse to be covered where t0 is, and
+			 * curve_t() would be a fifth of the walk: look at the
+			 * row's start first, whose point is known (below).
+			 */
+			if (!cover_skip(&C->cover, &t, j, r, &k)) {
+				if (C->cover.levels > 1)
+					below = s0;
+				else
+					t = curve_t(&C->cv, s0);
+			}
 		} else
 			t = curve_t(&C->cv, s0);
 	}
 	while (t <= C->cv.tmax) {
 		const double *pd = NULL;
-		int nh;
+		int nh, fr;
 
 		/* One call leaves t where the walk must look. */
 		if (!C->nocover && !skipped && cover_skip(&C->cover, &t, j, r,
@@ -518,7 +550,26 @@ coll_place_exact(struct coll *C, long long n, double t0, double s0,
 		/* Moved to a row's start: the curve there is known. */
 		if (k >= 0 && t == C->cover.t_row[k])
 			pd = C->cover.start[k];
-		if (free_at(C, t, c, s, r, pd, p, &to, hits, &nh)) {
+		fr = free_at(C, t, c, s, r, pd, p, &to, hits, &nh);
+		if (below >= 0) {
+			/*
+			 * That was row k's start, below t0 = curve_t(below):
+			 * blocked past the row, everything from it to the exit
+			 * is covered, t0 too; else t0 is worked out after all,
+			 * and the walk goes on from it or the exit, beyond.
+			 */
+			if (fr || !(to >= C->cover.t_row[k + 1])) {
+				double tt = curve_t(&C->cv, below);
+
+				t = !fr && to > tt ? to : tt;
+			} else
+				t = to;
+			/* At t0, row k is known not to be covered. */
+			skipped = t < C->cover.t_row[k + 1];
+			below = -1;
+			continue;
+		}
+		if (fr) {
 			*row = k;	/* cover_skip() has just found it */
 			return t;
 		}

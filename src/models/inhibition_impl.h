@@ -44,20 +44,17 @@ struct cutv {
 /*
  * The functions that hold those sums are built twice, for AVX2 and for
  * the baseline, and the CPU picks at load time (GCC's and Clang's
- * target_clones, on x86-64 where the C library has ifunc): four lanes
+ * target_clones, on x86-64 where the C library has ifunc: configure's
+ * test-target_clones.c says, and mingw-w64 has none): four lanes
  * where AVX2 has them, two with SSE2 alone.  Static functions only:
  * Clang names a global clone's entry NAME.ifunc, which callers in other
  * files do not find.  FMA is left out: a*b + c is rounded twice in both
  * builds (-std=c11 contracts nothing), so both give the same bits
  * (-DNO_CLONES builds the baseline alone, to compare).
  */
-#if defined(__x86_64__) && defined(__GLIBC__) && !defined(NO_CLONES) && \
-    defined(__has_attribute)
-#if __has_attribute(target_clones)
+#if HAVE_TARGET_CLONES && !defined(NO_CLONES)
 #define HOT	__attribute__((target_clones("avx2", "default")))
-#endif
-#endif
-#ifndef HOT
+#else
 #define HOT
 #endif
 

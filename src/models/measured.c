@@ -15,12 +15,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "analysis/axis.h"
 #include "analysis/kdtree.h"
 #include "analysis/unordered.h"
+#include "compat/compat.h"
 #include "diag.h"
 #include "geometry/geometry.h"
 #include "mem.h"
@@ -83,7 +82,7 @@ open_points(const struct model_ctx *ctx, const struct measured *P,
 {
 	int line = GIVEN_AT(P, MS_POINTS);
 	const char *why;
-	struct stat st;
+	struct sys_stat st;
 
 	if (!P->given[MS_POINTS]) {
 		model_error(ctx, P->at.line > 0 ? P->at.line : 1, "missing "
@@ -97,10 +96,11 @@ open_points(const struct model_ctx *ctx, const struct measured *P,
 		return -1;
 	}
 	*path = compound_resolve(ctx->file, P->points.v[0]);
-	why = stat(*path, &st) != 0 ? strerror(errno) :
-	    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
-	    !S_ISREG(st.st_mode) ? "not a regular file" :
-	    access(*path, R_OK) != 0 ? strerror(errno) : NULL;
+	/* A FIFO would wait for a writer for ever. */
+	why = sys_stat(*path, &st) != 0 ? strerror(errno) :
+	    st.kind == SYS_DIR ? strerror(EISDIR) :
+	    st.kind != SYS_REG ? "not a regular file" :
+	    !sys_readable(*path) ? strerror(errno) : NULL;
 	if (why != NULL) {
 		model_error(ctx, line, "measured.points %s: %s", *path, why);
 		free(*path);

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "compat/compat.h"
 #include "diag.h"
 #include "mem.h"
 #include "models/measured_csv.h"
@@ -518,7 +519,7 @@ points_read(struct points *P, const char *path)
 	struct reader R;
 	char *buf = xmalloc(POINTS_LINE_MAX + 1);
 	size_t have = 0, at = 0;
-	FILE *f = fopen(path, "rb");
+	FILE *f = sys_fopen(path, "rb");
 	int rc = 0, eof = 0;
 
 	start(&R, P, path);

@@ -2,6 +2,7 @@
 #ifndef MODEL_H
 #define MODEL_H
 
+#include "compat/compat.h"
 #include "result/organ.h"
 #include "scene/expr.h"
 #include "scene/settings.h"
@@ -82,9 +83,7 @@ int	model_run(const struct model *m, const struct model_ctx *,
 
 /* A problem with the scene at line (0: at its start); as scene_error(). */
 void	model_error(const struct model_ctx *, int line, const char *fmt, ...)
-#if defined(__GNUC__)
-	    __attribute__((format(printf, 3, 4)))
-#endif
+	    PRINTFLIKE(3, 4)
 	    ;
 
 /* Evaluate a setting of the group at path for the item ("organ") env->n. */

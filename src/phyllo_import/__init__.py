@@ -14,12 +14,13 @@
 # blender_manifest.toml beside this file (an extension).
 import json
 import os
+import re
 import runpy
-import shutil
 import subprocess
 import tempfile
 import time
 
+import blf
 import bpy
 from bpy.props import (BoolProperty, CollectionProperty, EnumProperty,
                        FloatProperty, IntProperty, PointerProperty,
@@ -51,8 +52,8 @@ class PhylloPreferences(bpy.types.AddonPreferences):
 
     program: StringProperty(
         name="phyllo-export",
-        description="The phyllo-export program: a path, or a name "
-        "looked up on PATH",
+        description="The phyllo-export program, where the add-on carries "
+        "none of its own: a full path, or a name looked up on PATH",
         default="phyllo-export",
         subtype="FILE_PATH")
 
@@ -61,21 +62,45 @@ class PhylloPreferences(bpy.types.AddonPreferences):
 
 
 def program(context):
-    """The configured phyllo-export; PHYLLO_EXPORT overrides it."""
+    """The add-on's own program (bin/, in the zips for one system), else
+    the configured one (PHYLLO_EXPORT overrides it): a full path, or the
+    first on PATH's full folders -- never one in the current or the
+    scene's folder (shutil.which and Windows look there first)."""
+    ext = ".exe" if os.name == "nt" else ""
+    own = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin",
+                       "phyllo-export" + ext)
+    if os.path.isfile(own):
+        try:
+            if not os.access(own, os.X_OK):
+                os.chmod(own, 0o755)    # a zip's files lose their modes
+        except OSError:
+            pass
+        return own
     prefs = context.preferences.addons.get(PACKAGE)
     name = os.environ.get("PHYLLO_EXPORT") or (
         prefs.preferences.program if prefs else "phyllo-export")
-    return shutil.which(name) or name
+    if os.path.dirname(name):
+        return name if os.path.isabs(name) else None
+    found = (os.path.join(d, n) for d in os.environ.get("PATH", "").split(
+        os.pathsep) if os.path.isabs(d) for n in (name, name + ext))
+    return next((p for p in found if os.path.isfile(p) and
+                 os.access(p, os.X_OK)), None)
 
 
 def run_program(context, args):
     """Run phyllo-export with args (a list: no shell).  Returns its
     output, or raises RuntimeError with its own one-line message."""
     exe = program(context)
+    if exe is None:
+        raise RuntimeError("phyllo-export: program not found: install it, "
+                           "or give its full path in the add-on's "
+                           "preferences")
     try:
         run = subprocess.run([exe] + args, stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE,
-                             universal_newlines=True, timeout=600)
+                             stderr=subprocess.PIPE, encoding="utf-8",
+                             errors="replace", timeout=600,
+                             creationflags=getattr(
+                                 subprocess, "CREATE_NO_WINDOW", 0))
     except (OSError, subprocess.SubprocessError) as e:
         raise RuntimeError("phyllo-export: cannot run %s: %s" % (exe, e))
     if run.returncode != 0:
@@ -92,6 +117,12 @@ def run_program(context, args):
 _filling = False    # set while the panel's fields are filled: no rebuild
 _choices = {}       # enum items by setting: Blender needs them kept
 NONE = "(none)"     # the menu item of a word not given (none is a word)
+# A number as the scene file writes one (libconfig's integers, with L
+# for 64 bits, hexadecimal, and floats); any other text in a number's
+# field is an expression.
+NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?L{0,2}\Z|"
+                    r"[-+]?0[xX][0-9a-fA-F]+L{0,2}\Z")
+INT32 = 2 ** 31     # what Blender's integer fields hold
 
 
 def quoted(text):
@@ -108,10 +139,9 @@ def quote(text):
     return '"%s"' % text.replace("\\", "\\\\").replace('"', '\\"')
 
 
-def number_text(x):
-    """A float field's value in scene syntax: seven digits, which is what
-    Blender's single-precision fields hold."""
-    return "%.7g" % x
+def shown(value):
+    """A number's or expression's text in its field: without quotes."""
+    return unquote(value) if quoted(value) else value
 
 
 def choice_items(self, context):
@@ -145,11 +175,17 @@ def setting_changed(self, context):
 
 
 class PhylloSetting(bpy.types.PropertyGroup):
-    """One setting of the scene: its path, its kind of field, its value
-    as the file (or the default) has it, and the field."""
+    """One setting of the scene or of one of its parts: its path
+    ("PART:path" for a part's), its kind of field, its value as the file
+    (or the default) has it, and the field."""
     path: StringProperty()
     type: StringProperty()      # as --settings and phyllo-export(5) say
-    kind: StringProperty()      # NUMBER INTEGER CHOICE STRING TEXT
+    # NUMBER: text, a number as typed or an expression (Blender's float
+    # fields hold seven digits, and a number may be an expression);
+    # INTEGER; CHOICE, a word of a list; TEXT, scene syntax; FIXED, shown
+    # and not changed here (name, model).
+    kind: StringProperty()
+    file: StringProperty()      # the scene file that holds it
     written: StringProperty()   # scene syntax, or "" for none
     origin: StringProperty()    # file, default
     default: StringProperty()
@@ -162,7 +198,6 @@ class PhylloSetting(bpy.types.PropertyGroup):
     # so it is greyed out and left out of --set.
     applies: BoolProperty(default=True)
     why: StringProperty()
-    number: FloatProperty(update=setting_changed, precision=4)
     integer: IntProperty(update=setting_changed)
     choice: EnumProperty(items=choice_items, update=setting_changed)
     text: StringProperty(update=setting_changed)
@@ -170,28 +205,23 @@ class PhylloSetting(bpy.types.PropertyGroup):
     def value(self):
         """The field's value in scene syntax ("" where none)."""
         if self.kind == "NUMBER":
-            return number_text(self.number)
+            # A number exactly as typed; anything else an expression.
+            text = self.text.strip()
+            return text if not text or NUMBER.match(text) else quote(text)
         if self.kind == "INTEGER":
             return str(self.integer)
         if self.kind == "CHOICE":
             return quote(self.choice) if self.choice != NONE else ""
-        if self.kind == "STRING":
-            if not self.text.strip():
-                return ""
-            # An expression field holding a number is the number.
-            try:
-                float(self.text)
-                return self.text.strip()
-            except ValueError:
-                return quote(self.text)
+        if self.kind == "FIXED":
+            return self.written
         return self.text.strip()
 
     def changed(self):
-        if self.kind == "NUMBER" and self.written:
-            x = float(self.written)
-            return abs(self.number - x) > 1e-6 * max(1.0, abs(x))
-        return self.value() != self.written and \
-            not (self.value() == "" and self.written == "")
+        if self.kind == "NUMBER":
+            # As shown, so that "15", a string, is not taken for a change
+            # to 15.
+            return self.text.strip() != shown(self.written)
+        return self.value() != self.written
 
 
 class PhylloStructure(bpy.types.PropertyGroup):
@@ -203,6 +233,10 @@ class PhylloStructure(bpy.types.PropertyGroup):
     seconds: FloatProperty()    # the last run, program and build
     stale: BoolProperty()       # changed since the last build
     last: StringProperty()      # the setting changed last, shown whole
+    show_parts: BoolProperty(name="Parts", default=True,
+                             description="Show the settings of the parts, "
+                             "the scenes the structure's organs are made "
+                             "of (each saved into its own file)")
     live: BoolProperty(name="Live", default=True,
                        description="Rebuild as soon as a setting changes, "
                        "while a run takes at most %.1f s" % LIVE_SECONDS)
@@ -216,16 +250,24 @@ class PhylloStructure(bpy.types.PropertyGroup):
 
 
 def kind_of(s):
-    """The field a setting of --settings gets: a number field where it
-    has a number, a menu for a word of a list, the text of a string or
-    expression without its quotes, else the scene file's own text."""
+    """The field a setting of --settings gets: shown only for the name
+    and the model (the panel's fields are that model's, its collection
+    that name's); a menu for a word of a list; an integer field for an
+    integer Blender's fields hold; the text of a number or expression
+    (without its quotes); else the scene file's own text."""
     value = s["value"] or ""
-    if s.get("choices"):
+    path = s["path"].split(":")[-1]
+    if path in ("name", "model"):
+        return "FIXED"
+    if s.get("choices") and (not value or quoted(value) and
+                             unquote(value) in s["choices"]):
         return "CHOICE"
-    if s["type"] in ("number", "integer") and value:
-        return "NUMBER" if s["type"] == "number" else "INTEGER"
-    if s["type"] == "expression":
-        return "STRING"
+    if s["type"] == "integer" and re.match(r"[-+]?\d+L{0,2}\Z", value) \
+            and -INT32 <= int(value.rstrip("L")) < INT32:
+        return "INTEGER"
+    if s["type"] in ("number", "integer", "expression") and (
+            not quoted(value) or quote(unquote(value)) == value):
+        return "NUMBER"
     return "TEXT"
 
 
@@ -235,51 +277,62 @@ def interval(s):
     if lo is None and hi is None:
         return ""
     return "%s%s, %s]" % ("(" if s.get("min_open") or lo is None else "[",
-                          "-inf" if lo is None else "%g" % lo,
-                          "inf" if hi is None else "%g" % hi)
+                          "-inf" if lo is None else "%.12g" % lo,
+                          "inf" if hi is None else "%.12g" % hi)
 
 
-def fill(st, settings):
-    """The panel's fields from --settings' list."""
+def rows_of(listing):
+    """The panel's fields for --settings' listing, every setting of the
+    scene and of its parts, worked out whole before anything is set:
+    what cannot be read here fails before the import changes anything."""
+    files = {p["object"]: os.path.abspath(p["scene"])
+             for p in listing.get("parts", [])}
+    rows = []
+    for s in listing["settings"]:
+        value = s["value"] or ""
+        kind = kind_of(s)
+        part = s["path"].split(":")[0] if ":" in s["path"] else ""
+        row = dict(
+            path=s["path"], type=s["type"], kind=kind, written=value,
+            file=files.get(part, "") if part else
+            os.path.abspath(listing["scene"]),
+            origin=s["from"], default=s["default"], doc=s["doc"],
+            unit=s.get("unit", ""), range=interval(s),
+            choices="\n".join(s.get("choices", [])),
+            applies=s.get("applies", True), why=s.get("why", ""))
+        if kind == "INTEGER":
+            row["integer"] = int(value.rstrip("L"))
+        elif kind == "CHOICE":
+            row["choice"] = unquote(value) if value else NONE
+        elif kind == "NUMBER":
+            row["text"] = shown(value)
+        elif kind == "TEXT":
+            row["text"] = value
+        rows.append(row)
+    return rows
+
+
+def fill(st, rows):
+    """The panel's fields, from rows_of()."""
     global _filling
     _filling = True
     try:
         st.settings.clear()
-        for s in settings:
-            if ":" in s["path"] or s["path"] in ("name", "model"):
-                continue    # a part's, or one the panel cannot change
+        for row in rows:
             item = st.settings.add()
-            value = s["value"] or ""
-            item.path = s["path"]
-            item.type = s["type"]
-            item.kind = kind_of(s)
-            item.written = value
-            item.origin = s["from"]
-            item.default = s["default"]
-            item.doc = s["doc"]
-            item.unit = s.get("unit", "")
-            item.range = interval(s)
-            item.choices = "\n".join(s.get("choices", []))
-            item.applies = s.get("applies", True)
-            item.why = s.get("why", "")
-            if item.kind == "NUMBER":
-                item.number = float(value)
-            elif item.kind == "INTEGER":
-                item.integer = int(value.rstrip("L"))
-            elif item.kind == "CHOICE":
-                item.choice = unquote(value) if value else NONE
-            elif item.kind == "STRING":
-                item.text = unquote(value) if quoted(value) else value
-            else:
-                item.text = value
+            # The menu's items depend on choices and written: set first.
+            for key in ("choices", "written"):
+                setattr(item, key, row[key])
+            for key, value in row.items():
+                setattr(item, key, value)
     finally:
         _filling = False
 
 
 def field_of(item):
     """The property that holds a setting's value in the panel."""
-    return {"NUMBER": "number", "INTEGER": "integer",
-            "CHOICE": "choice"}.get(item.kind, "text")
+    return {"INTEGER": "integer", "CHOICE": "choice",
+            "FIXED": "written"}.get(item.kind, "text")
 
 
 def kept_changes(st):
@@ -381,25 +434,27 @@ class IMPORT_SCENE_OT_phyllotaxis(bpy.types.Operator, ImportHelper):
         "expressions, and set the timeline to them (0: one, no frames)")
 
     def execute(self, context):
+        # Everything that may fail comes before the build, the one step
+        # that changes the .blend: a failed import leaves it as it was.
+        # (The script sets the timeline to the frames.)
         try:
+            listing = settings_of(context, self.filepath)
+            rows = rows_of(listing)
             seconds = build(context, self.filepath, self.frames, [])
-            settings = settings_of(context, self.filepath)
-        except RuntimeError as e:
+        except (RuntimeError, ValueError, KeyError) as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        top = structure_of(settings["name"])
+        top = structure_of(listing["name"])
         if top is not None:
             st = top.phyllo
             st.scene = self.filepath
             st.frames = self.frames
             st.error = ""
+            st.last = ""
             st.seconds = seconds
             st.stale = False
-            fill(st, settings["settings"])
+            fill(st, rows)
             context.scene.phyllo_structure = top
-        if self.frames:
-            scene = context.scene
-            scene.frame_end = scene.frame_start + self.frames - 1
         self.report({"INFO"}, "Imported %s"
                     % os.path.basename(self.filepath))
         return {"FINISHED"}
@@ -444,19 +499,28 @@ class PHYLLO_OT_revert(OnStructure, bpy.types.Operator):
     def execute(self, context):
         top = active_structure(context)
         st = top.phyllo
+        path = bpy.path.abspath(st.scene)
+        # Built first, the fields after: a failure (the file changed
+        # since, and now bad) leaves both as they were.
         try:
-            fill(st, settings_of(context, bpy.path.abspath(st.scene))[
-                "settings"])
-            rebuild(context, top)
-        except RuntimeError as e:
+            rows = rows_of(settings_of(context, path))
+            seconds = build(context, path, st.frames, [])
+        except (RuntimeError, ValueError, KeyError) as e:
+            st.error = str(e)
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
+        fill(st, rows)
+        st.error = ""
+        st.seconds = seconds
+        st.stale = False
         return {"FINISHED"}
 
 
 class PHYLLO_OT_save(OnStructure, bpy.types.Operator):
-    """Write the changed settings into the scene file, keeping its
-    comments and layout (phyllo-export --cfg)"""
+    """Write the changed settings into the scene file, and a part's into
+    the part's own file, keeping comments and layout (phyllo-export
+    --cfg); a setting the file gives that a change leaves unused is
+    taken out"""
     bl_idname = "phyllo.save"
     bl_label = "Save to Scene File"
     bl_options = {"REGISTER", "UNDO"}
@@ -464,37 +528,119 @@ class PHYLLO_OT_save(OnStructure, bpy.types.Operator):
     def execute(self, context):
         top = active_structure(context)
         st = top.phyllo
-        path = bpy.path.abspath(st.scene)
-        overrides = st.overrides()
+        main = bpy.path.abspath(st.scene)
         kept = kept_changes(st)
+        changes = {}        # file: its --set, a part's without "PART:"
+        for s in st.settings:
+            if s.changed() and s.value() != "" and s.applies:
+                if not s.file:
+                    self.report({"ERROR"}, "%s: the file of its part is "
+                                "not known: nothing written" % s.path)
+                    return {"CANCELLED"}
+                changes.setdefault(s.file, []).append(
+                    "%s=%s" % (s.path.split(":")[-1], s.value()))
+        given = {s.path for s in st.settings if s.origin == "file"}
+        tmps = []
         try:
-            text = run_program(context, ["--cfg"] + sum(
-                (["--set", o] for o in overrides), []) + [path])
-            # Beside the file, then over it: a failed write leaves it.
-            tmp = "%s.%d.tmp" % (path, os.getpid())
-            with open(tmp, "w") as f:
-                f.write(text)
-            os.replace(tmp, path)
-            settings = settings_of(context, path)
-        except (RuntimeError, OSError) as e:
+            # Every file's text first, then each written beside its file
+            # and put over it: a refusal or a failed write leaves them.
+            texts = [(f, run_program(context, ["--cfg"] + sum(
+                (["--set", o] for o in sets), []) + [f]))
+                for f, sets in sorted(changes.items())]
+            for f, text in texts:
+                tmps.append("%s.%d.tmp" % (f, os.getpid()))
+                with open(tmps[-1], "w") as out:
+                    out.write(text)
+            for (f, _), tmp in zip(texts, tmps):
+                os.replace(tmp, f)
+            rows = rows_of(settings_of(context, main))
+        except (RuntimeError, OSError, ValueError, KeyError) as e:
+            for tmp in tmps:
+                if os.path.exists(tmp):
+                    os.remove(tmp)
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        fill(st, settings["settings"])
+        fill(st, rows)
         put_back(st, kept)
-        self.report({"INFO"}, "Wrote %d setting(s) into %s"
-                    % (len(overrides), os.path.basename(path)))
+        taken = sorted(given - {r["path"] for r in rows
+                                if r["origin"] == "file"})
+        self.report({"INFO"}, "Wrote %d setting(s) into %s%s" % (
+            sum(len(v) for v in changes.values()),
+            ", ".join(os.path.basename(f) for f in sorted(changes)) or
+            "no file (nothing changed)",
+            "; took out %s, which the changes leave unused"
+            % ", ".join(taken) if taken else ""))
         return {"FINISHED"}
 
 
 def group_of(path):
     """The panel's box a setting goes in: "Scene", "planar",
-    "collision.receptacle", "organs 1"..."""
+    "collision.receptacle", "Organs entry 1", and for a part's,
+    "Achene: planar"..."""
+    part, _, path = path.rpartition(":")
     parts = path.split(".")
     if len(parts) == 1:
-        return "Scene"
-    if parts[0] == "organs":
-        return "Organs entry %s" % parts[1]
-    return ".".join(parts[:-1])
+        group = "Scene"
+    elif parts[0] == "organs":
+        group = "Organs entry %s" % parts[1]
+    else:
+        group = ".".join(parts[:-1])
+    return "%s: %s" % (part, group) if part else group
+
+
+# --- Labels wrapped to the sidebar's width. ---
+
+# What a label in a box of the sidebar does not have of the region's
+# width, in pixels at scale 1: the column of tabs, the panel's and the
+# box's margins and the label's own.  Measured on a screenshot of
+# Blender 3.4 (a 229-pixel region at scale 1.04 leaves 162 pixels of
+# text, 136 beside an icon), with a few to spare.
+LABEL_MARGIN = 72
+ICON = 28           # a label's icon and its gap, at scale 1
+
+
+def ui_scale(context):
+    # The display's and the user's scale together; 0 without a window.
+    return context.preferences.system.ui_scale or \
+        context.preferences.view.ui_scale
+
+
+def text_width(context, text):
+    """Pixels the UI's font draws text in, at the UI's size and scale."""
+    blf.size(0, context.preferences.ui_styles[0].widget.points *
+             ui_scale(context))
+    return blf.dimensions(0, text)[0]
+
+
+def wrap(text, fits):
+    """text in lines that each fit (fits(line) is true): by words, and a
+    word that does not fit a line alone by characters, so that Blender
+    never cuts a line short in its middle."""
+    lines, line = [], ""
+    for word in text.split():
+        if not line or fits(line + " " + word):
+            line = (line + " " + word).strip()
+            if fits(line):
+                continue
+        else:
+            lines.append(line)
+            line = word
+        while not fits(line) and len(line) > 1:
+            n = len(line) - 1
+            while n > 1 and not fits(line[:n]):
+                n -= 1
+            lines.append(line[:n])
+            line = line[n:]
+    return lines + [line] if line else lines
+
+
+def wrapped(context, text, icon=False):
+    """text as label lines for a box of the sidebar's region."""
+    region = getattr(context, "region", None)
+    scale = ui_scale(context)
+    room = (region.width if region is not None else 300) - \
+        (LABEL_MARGIN + ICON * icon) * scale
+    return wrap(text, lambda line: text_width(context, line) <= room)
 
 
 class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
@@ -516,53 +662,58 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
         if st.error:
             box = layout.box()
             box.alert = True
-            for i, line in enumerate(wrap(st.error, 48)):
+            for i, line in enumerate(wrapped(context, st.error, True)):
                 box.label(text=line, icon="ERROR" if i == 0 else "BLANK1")
-        row = layout.row()
+        # Update, with the last run's time, the wider: in half the
+        # sidebar's width it was cut short.
+        row = layout.split(factor=0.35)
         row.prop(st, "live")
         sub = row.row()
         sub.enabled = st.stale or bool(st.error)
-        sub.operator("phyllo.update", text="Update (last %.2f s)"
-                     % st.seconds)
+        sub.operator("phyllo.update", text="Update (%.2f s)" % st.seconds)
         last = next((s for s in st.settings if s.path == st.last), None)
         if last is not None:
             # The setting changed last, whole: what the rows leave out.
             box = layout.box()
-            box.label(text="%s: %s" % (last.path, last.type), icon="INFO")
-            for line in wrap("; ".join(w for w in (
+            for i, line in enumerate(wrapped(
+                    context, "%s: %s" % (last.path, last.type), True)):
+                box.label(text=line, icon="INFO" if i == 0 else "BLANK1")
+            for line in wrapped(context, "; ".join(w for w in (
                     last.doc, last.range and "range " + last.range,
                     last.unit, "default " + last.default,
-                    "file " + (last.written or "none")) if w), 44):
+                    "file " + (last.written or "none")) if w)):
                 box.label(text=line)
-        box, group = None, None
+        box, group, part = None, None, ""
         for item in st.settings:
+            if ":" in item.path and not part:
+                # The parts' settings, after the scene's, folded away
+                # at will.
+                part = item.path.split(":")[0]
+                layout.prop(st, "show_parts", emboss=False,
+                            icon="TRIA_DOWN" if st.show_parts
+                            else "TRIA_RIGHT")
+            if part and not st.show_parts:
+                break
             if group_of(item.path) != group:
                 group = group_of(item.path)
                 box = layout.box()
                 box.label(text=group)
             # The name, marked when changed, then the field.
             split = box.split(factor=0.4, align=True)
-            split.enabled = item.applies
-            split.label(text=item.path.split(".")[-1] +
+            split.enabled = item.applies and item.kind != "FIXED"
+            split.label(text=item.path.split(".")[-1].split(":")[-1] +
                         (" *" if item.changed() else ""))
-            split.prop(item, field_of(item), text="")
+            if item.kind == "FIXED":
+                split.label(text=unquote(item.written)
+                            if quoted(item.written) else item.written)
+            else:
+                split.prop(item, field_of(item), text="")
             if not item.applies:
-                for line in wrap(item.why, 44):
+                for line in wrapped(context, item.why):
                     box.label(text=line)
         row = layout.row()
         row.operator("phyllo.save")
         row.operator("phyllo.revert")
-
-
-def wrap(text, width):
-    words, lines, line = text.split(), [], ""
-    for w in words:
-        if line and len(line) + 1 + len(w) > width:
-            lines.append(line)
-            line = w
-        else:
-            line = (line + " " + w).strip()
-    return lines + [line] if line else lines
 
 
 def menu_import(self, context):

@@ -7,6 +7,9 @@
  * (count = 20000000000 arrives as -1474836480).  We reject NULs with
  * their line, and append the L suffix to every integer literal that does
  * not fit in 32 bits, so the range checks see the number as written.
+ * And it calls a file whose last line is a comment without a newline,
+ * or one that starts with a UTF-8 byte-order mark (as Windows editors
+ * write), a syntax error: the mark is left out and a newline added.
  * Line numbers are unchanged.
  */
 #include <ctype.h>
@@ -79,7 +82,7 @@ char *
 cfgtext_prepare(const char *text, size_t len, int *nul_line)
 {
 	const char *p = text, *end = text + len;
-	char *out = xmalloc(len + len / 2 + 2), *o = out;
+	char *out = xmalloc(len + len / 2 + 3), *o = out;
 	int line = 1;
 
 	*nul_line = 0;
@@ -91,6 +94,8 @@ cfgtext_prepare(const char *text, size_t len, int *nul_line)
 		}
 		line += *q == '\n';
 	}
+	if (len >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+		p += 3;
 	while (p < end) {
 		size_t n = skip_inert(p, end);
 
@@ -127,6 +132,8 @@ cfgtext_prepare(const char *text, size_t len, int *nul_line)
 		}
 		*o++ = *p++;
 	}
+	if (o > out && o[-1] != '\n')
+		*o++ = '\n';
 	*o = '\0';
 	return out;
 }
@@ -573,70 +580,129 @@ add_member(const char *text, size_t len, const char *from, const char *to,
 	return out;
 }
 
-char *
-cfgtext_splice(const char *text, size_t len, const char *path,
-    const char *value, size_t *newlen)
-{
-	const char *from = text, *to = text + len, *end = text + len, *dot;
-	char name[128];
-	int top = 1;
+/*
+ * Where the setting at path stands in the text, as cfgtext_splice() and
+ * cfgtext_cut() walk to it.  1: found, *m the member; 0: a group on the
+ * way lacks the rest of the path, *rest, to be added in the group
+ * [*from, *to) (the whole text when *top) after *last (NULL if empty);
+ * -1: the text cannot hold the path (a list entry it lacks, a value
+ * where the path goes on).
+ */
+struct place {
+	struct member	 m, last;
+	const char	*from, *to, *rest;
+	int		 top, any;
+};
 
+static int
+find_member(const char *text, size_t len, const char *path,
+    struct place *pl)
+{
+	const char *end = text + len, *dot;
+	char name[128];
+
+	pl->from = text;
+	if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0)
+		pl->from += 3;	/* a byte-order mark, kept */
+	pl->to = end;
+	pl->top = 1;
 	for (const char *c = path; ; c = dot + 1) {
-		struct member m, last;
-		const char *p = from;
+		const char *p = pl->from;
 		size_t n;
-		int found = 0, any = 0;
 
 		dot = strchr(c, '.');
 		n = dot != NULL ? (size_t)(dot - c) : strlen(c);
 		if (n >= sizeof(name) || isdigit((unsigned char)*c))
-			return NULL;
+			return -1;
 		memcpy(name, c, n);
 		name[n] = '\0';
-		while ((p = next_member(p, to, &m)) != NULL) {
-			any = 1;
-			last = m;
-			if (m.nlen == n && strncmp(m.name, name, n) == 0) {
-				found = 1;
-				break;
+		pl->any = 0;
+		for (;;) {
+			if ((p = next_member(p, pl->to, &pl->m)) == NULL) {
+				pl->rest = c;
+				return 0;
 			}
-		}
-		if (!found) {
-			char *member = made(c, value), *out;
-
-			if (member == NULL)
-				return NULL;
-			out = add_member(text, len, from, to, any ? &last :
-			    NULL, top, member, newlen);
-			free(member);
-			return out;
+			pl->any = 1;
+			pl->last = pl->m;
+			if (pl->m.nlen == n && strncmp(pl->m.name, name, n) == 0)
+				break;
 		}
 		if (dot == NULL)
-			return splice(text, len, m.value, (size_t)(m.value_end -
-			    m.value), value, newlen);
-		top = 0;
-		if (*m.value == '{') {
-			inside(m.value, end, &from, &to);
+			return 1;
+		pl->top = 0;
+		if (*pl->m.value == '{') {
+			inside(pl->m.value, end, &pl->from, &pl->to);
 			continue;
 		}
-		if (*m.value != '(' || !isdigit((unsigned char)dot[1]))
-			return NULL;
+		if (*pl->m.value != '(' || !isdigit((unsigned char)dot[1]))
+			return -1;
 		/* An entry of a list, by number, then into its group. */
 		{
 			char *after;
 			long k = strtol(dot + 1, &after, 10);
-			const char *e = skip_blank(m.value + 1, end);
+			const char *e = skip_blank(pl->m.value + 1, end);
 
 			for (long i = 0; i < k && e < end; i++) {
 				e = skip_blank(skip_value(e, end), end);
 				if (e >= end || *e != ',')
-					return NULL;
+					return -1;
 				e = skip_blank(e + 1, end);
 			}
 			if (e >= end || *e != '{' || *after != '.')
-				return NULL;
-			inside(e, end, &from, &to);
+				return -1;
+			inside(e, end, &pl->from, &pl->to);
 			dot = after;
 		}
 	}
+}
+
+char *
+cfgtext_splice(const char *text, size_t len, const char *path,
+    const char *value, size_t *newlen)
+{
+	struct place pl;
+	char *member, *out;
+
+	switch (find_member(text, len, path, &pl)) {
+	case 1:
+		return splice(text, len, pl.m.value, (size_t)(pl.m.value_end -
+		    pl.m.value), value, newlen);
+	case 0:
+		if ((member = made(pl.rest, value)) == NULL)
+			return NULL;
+		out = add_member(text, len, pl.from, pl.to, pl.any ? &pl.last :
+		    NULL, pl.top, member, newlen);
+		free(member);
+		return out;
+	}
+	return NULL;
+}
+
+char *
+cfgtext_cut(const char *text, size_t len, const char *path,
+    size_t *newlen)
+{
+	const char *end = text + len, *from, *to;
+	struct place pl;
+
+	if (find_member(text, len, path, &pl) != 1)
+		return NULL;
+	from = pl.m.name;
+	to = pl.m.end;
+	/* The blanks after it too, to the next member or the line's end. */
+	while (to < end && (*to == ' ' || *to == '\t'))
+		to++;
+	if (to == end || *to == '\n') {
+		/* Alone on its line: the line goes, else only its blanks. */
+		const char *ls = from;
+
+		while (ls > text && (ls[-1] == ' ' || ls[-1] == '\t'))
+			ls--;
+		if (ls == text || ls[-1] == '\n') {
+			from = ls;
+			to += to < end;
+		} else
+			from = ls;
+	}
+	return splice(text, len, from, (size_t)(to - from), "", newlen);
 }

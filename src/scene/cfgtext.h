@@ -37,4 +37,13 @@ char	*cfgtext_value(const struct config_setting_t *);
 char	*cfgtext_splice(const char *text, size_t len, const char *path,
 	    const char *value, size_t *newlen);
 
+/*
+ * text without the setting at path: "name = value;" taken out, with
+ * its line where nothing else is on it (a comment after it stays);
+ * every other comment and line as it was.  Allocated, with *newlen;
+ * NULL where the text does not have it.
+ */
+char	*cfgtext_cut(const char *text, size_t len, const char *path,
+	    size_t *newlen);
+
 #endif

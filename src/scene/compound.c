@@ -10,9 +10,8 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "compat/compat.h"
 #include "scene/compound.h"
 #include "diag.h"
 #include "mem.h"
@@ -22,8 +21,7 @@ struct chain {
 	const struct chain *up;
 	const char	*file;
 	const char	*object;	/* the object it makes; "" the main */
-	dev_t		 dev;
-	ino_t		 ino;
+	struct sys_id	 id;
 };
 
 struct loader {
@@ -44,12 +42,11 @@ find_part(const struct compound *C, const char *object)
 char *
 compound_resolve(const char *from, const char *rel)
 {
-	const char *slash = strrchr(from, '/');
-	size_t dir = slash != NULL && strcmp(from, "<stdin>") != 0 ?
-	    (size_t)(slash - from + 1) : 0;
+	size_t dir = strcmp(from, "<stdin>") != 0 ?
+	    (size_t)(sys_base(from) - from) : 0;
 	char *p;
 
-	if (rel[0] == '/' || dir == 0)
+	if (sys_absolute(rel) || dir == 0)
 		return xstrdup(rel);
 	p = xmalloc(dir + strlen(rel) + 1);
 	memcpy(p, from, dir);
@@ -94,10 +91,11 @@ load_parts(struct loader *L, struct part *p, const struct chain *me)
 		path = compound_resolve(p->file, sc->object_scene[j]);
 		had = find_part(L->C, name);
 		if (had != NULL) {
-			struct stat a, b;
+			struct sys_stat a, b;
 
-			if (stat(path, &a) != 0 || stat(had->file, &b) != 0 ||
-			    a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
+			if (sys_stat(path, &a) != 0 ||
+			    sys_stat(had->file, &b) != 0 ||
+			    !SYS_SAME(a.id, b.id)) {
 				diag(ST_SCENE, p->file, sc->object_line[j], 0,
 				    "organ object \"%s\" is made of %s here "
 				    "but of %s in %s: one name, one thing",
@@ -121,9 +119,9 @@ static int
 load(struct loader *L, const char *path, const char *object,
     const struct chain *up, int line)
 {
-	struct chain me = { up, path, object, 0, 0 };
+	struct chain me = { up, path, object, { 0, 0 } };
 	struct part *p;
-	struct stat st;
+	struct sys_stat st;
 	char words[1024];
 	int depth = 0, loaded;
 
@@ -133,20 +131,19 @@ load(struct loader *L, const char *path, const char *object,
 		 * it (exit 1), wherever the reason lies; and a FIFO would
 		 * wait for a writer for ever.
 		 */
-		const char *why = stat(path, &st) != 0 ? strerror(errno) :
-		    S_ISDIR(st.st_mode) ? strerror(EISDIR) :
-		    !S_ISREG(st.st_mode) ? "not a regular file" :
-		    access(path, R_OK) != 0 ? strerror(errno) : NULL;
+		const char *why = sys_stat(path, &st) != 0 ? strerror(errno) :
+		    st.kind == SYS_DIR ? strerror(EISDIR) :
+		    st.kind != SYS_REG ? "not a regular file" :
+		    !sys_readable(path) ? strerror(errno) : NULL;
 
 		if (why != NULL) {
 			diag(ST_SCENE, up->file, line, 0, "scene file %s of "
 			    "organ object \"%s\": %s", path, object, why);
 			return -1;
 		}
-		me.dev = st.st_dev;
-		me.ino = st.st_ino;
+		me.id = st.id;
 		for (const struct chain *c = up; c != NULL; c = c->up) {
-			if ((c->dev == st.st_dev && c->ino == st.st_ino) ||
+			if (SYS_SAME(c->id, st.id) ||
 			    strcmp(c->object, object) == 0) {
 				chain_words(words, sizeof(words), up, path);
 				diag(ST_SCENE, up->file, line, 0, "scenes "
@@ -164,10 +161,8 @@ load(struct loader *L, const char *path, const char *object,
 			    "parts in one structure");
 			return -1;
 		}
-	} else if (strcmp(path, "-") != 0 && stat(path, &st) == 0) {
-		me.dev = st.st_dev;
-		me.ino = st.st_ino;
-	}
+	} else if (strcmp(path, "-") != 0 && sys_stat(path, &st) == 0)
+		me.id = st.id;
 
 	p = xcalloc(1, sizeof(*p));
 	p->file = xstrdup(path);

@@ -10,6 +10,7 @@
 #include <libconfig.h>
 #include <stddef.h>
 
+#include "compat/compat.h"
 #include "models/model.h"
 #include "scene/expr.h"
 #include "scene/settings.h"
@@ -39,9 +40,7 @@ load_line(const config_setting_t *s)
 /* scene_values.c */
 void	 load_err_at(const struct load *, const config_setting_t *,
 	    const char *fmt, ...)
-#if defined(__GNUC__)
-	    __attribute__((format(printf, 3, 4)))
-#endif
+	    PRINTFLIKE(3, 4)
 	    ;
 void	 load_words_join(char *buf, size_t sz, const char *const *words);
 void	 load_model_names(const char *words[MODELS_MAX + 1]);

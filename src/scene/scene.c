@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "compat/compat.h"
 #include "scene/cfgtext.h"
 #include "diag.h"
 #include "mem.h"
@@ -30,11 +31,9 @@
 static void
 name_from_file(char *dst, const char *file)
 {
-	const char *base = strrchr(file, '/');
-	size_t len;
+	const char *base = sys_base(file);
+	size_t len = strcspn(base, ".");
 
-	base = base != NULL ? base + 1 : file;
-	len = strcspn(base, ".");
 	if (len > NAME_LEN)
 		len = NAME_LEN;
 	if (len == 0 || !isalpha((unsigned char)base[0]) ||
@@ -280,7 +279,7 @@ scene_load_as(struct scene *sc, const char *path, const char *object,
     const struct loading *ld)
 {
 	const char *file = strcmp(path, "-") == 0 ? "<stdin>" : path;
-	FILE *fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+	FILE *fp = strcmp(path, "-") == 0 ? stdin : sys_fopen(path, "rb");
 	char *text = NULL;
 	size_t len = 0, cap = 0, got;
 	int rc;

@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 
+#include "compat/compat.h"
 #include "scene/expr.h"
 #include "result/organ.h"
 #include "scene/settings.h"
@@ -98,6 +99,8 @@ struct written {
 	char		*text;		/* its value in scene-file syntax */
 	int		 line;		/* where: a line, or an override's
 					   (DIAG_LINE_SET + k) */
+	int		 dropped;	/* given by the file, left unused by a
+					   --set: --cfg takes it out */
 };
 
 extern const struct table scene_table;
@@ -137,9 +140,7 @@ int	 scene_run(const struct scene *, struct result *,
 /* Apply the scene's organs entries to placed organs (organs.c); 0 or -1. */
 int	 organs_apply(const struct scene *, struct result *);
 void	 scene_error(const struct scene *, int line, const char *fmt, ...)
-#if defined(__GNUC__)
-	    __attribute__((format(printf, 3, 4)))
-#endif
+	    PRINTFLIKE(3, 4)
 	    ;
 
 #endif

@@ -190,7 +190,7 @@ load_record(struct load *L, const config_setting_t *s)
 	sc->written = xreallocarray(sc->written, sc->nwritten + 1,
 	    sizeof(*sc->written));
 	sc->written[sc->nwritten++] = (struct written){ xstrdup(path),
-	    cfgtext_value(s), load_line(s) };
+	    cfgtext_value(s), load_line(s), 0 };
 }
 
 static int
@@ -280,8 +280,10 @@ file_alone_loads(const struct load *L)
  * alone loads (so a --set made it unused), it is ignored with a
  * warning: --set switches the kernel of a file that gives an exponent
  * without the file being edited (the Blender panel's menus do so).
- * Not where the scene is kept as written (--cfg): the file it wrote
- * would not load.  0, 1 to drop it, or -1 after the error.
+ * Where the scene is kept as written (--cfg), the main scene's is
+ * marked to be taken out of the file written, which would not load
+ * with it (the panel's Save after such a switch); a part's file is not
+ * written.  0, 1 to drop it, or -1 after the error.
  */
 static int
 unused_given(struct load *L, int line, const char *what, const char *why)
@@ -292,6 +294,21 @@ unused_given(struct load *L, int line, const char *what, const char *why)
 		diag(ST_SCENE, L->file, line, 0, "'%s' does not apply %s", what,
 		    why);
 		return -1;
+	}
+	if (L->record && *L->object == '\0') {
+		struct scene *sc = L->sc;
+		size_t i = 0;
+
+		while (i < sc->nwritten && strcmp(sc->written[i].path,
+		    what) != 0)
+			i++;
+		if (i < sc->nwritten) {
+			sc->written[i].dropped = 1;
+			diag(ST_OK, L->file, line, 0, "'%s' does not apply %s, "
+			    "as --set makes it: taken out of the file "
+			    "written", what, why);
+			return 1;
+		}
 	}
 	if (L->record) {
 		diag(ST_SCENE, L->file, line, 0, "'%s' does not apply %s, as "

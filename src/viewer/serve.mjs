@@ -12,6 +12,8 @@ const types = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript',
   '.mjs': 'text/javascript', '.json': 'application/json',
   '.glb': 'model/gltf-binary', '.png': 'image/png', '.svg': 'image/svg+xml',
+  '.css': 'text/css', '.wasm': 'application/wasm',
+  '.cfg': 'text/plain; charset=utf-8',
 };
 
 // A server of root's files; resolves to it once it listens.

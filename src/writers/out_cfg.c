@@ -2,9 +2,12 @@
  * out_cfg.c - --cfg: the scene file again, each --set written into it
  * where its setting stands (or added to the group holding it), every
  * comment and line as it was: what the Blender panel's "Save to scene
- * file" writes, and one file of a sweep from a shell.  The text made is
- * read again and must give the settings the scene gives with its --set;
- * anything else is a fault of ours, and nothing is written.
+ * file" writes, and one file of a sweep from a shell.  A setting the
+ * file gives that a --set leaves unused (the exponent, the kernel made
+ * Gaussian) is taken out, since the file would not load with it.  The
+ * text made is read again and must give the settings the scene gives
+ * with its --set; anything else is a fault of ours, and nothing is
+ * written.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -16,15 +19,19 @@
 #include "scene/override.h"
 #include "writers/writer.h"
 
-/* Whether a and b hold the same settings, written alike. */
+/* Whether a (but what it drops) and b hold the same settings, written
+ * alike. */
 static int
 same_settings(const struct scene *a, const struct scene *b)
 {
-	if (a->nwritten != b->nwritten)
-		return 0;
+	size_t kept = 0;
+
 	for (size_t i = 0; i < a->nwritten; i++) {
 		size_t j = 0;
 
+		if (a->written[i].dropped)
+			continue;
+		kept++;
 		while (j < b->nwritten && strcmp(a->written[i].path,
 		    b->written[j].path) != 0)
 			j++;
@@ -32,7 +39,7 @@ same_settings(const struct scene *a, const struct scene *b)
 		    b->written[j].text) != 0)
 			return 0;
 	}
-	return 1;
+	return kept == b->nwritten;
 }
 
 int
@@ -61,6 +68,25 @@ cfg_write(struct sink *s, const struct compound *c,
 			diag(ST_USAGE, NULL, 0, 0, "--set %s: the path is not "
 			    "in %s as a group or an entry of a list",
 			    set[k].arg, sc->file);
+			rc = -1;
+		} else {
+			free(text);
+			text = next;
+			len = n;
+		}
+	}
+	for (size_t i = 0; i < sc->nwritten && rc == 0; i++) {
+		size_t n;
+		char *next;
+
+		if (!sc->written[i].dropped)
+			continue;
+		if ((next = cfgtext_cut(text, len, sc->written[i].path,
+		    &n)) == NULL) {
+			diag(ST_SYSTEM, sc->file, sc->written[i].line, 0,
+			    "'%s' cannot be taken out of the text: a fault of "
+			    "phyllo-export's (nothing written)",
+			    sc->written[i].path);
 			rc = -1;
 		} else {
 			free(text);

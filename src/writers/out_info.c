@@ -4,6 +4,7 @@
 
 #include "result/flatten.h"
 #include "analysis/parastichy.h"
+#include "meshes/meshes.h"
 #include "writers/plan.h"
 #include "writers/unordered_out.h"
 #include "writers/writer.h"
@@ -138,10 +139,16 @@ sizes(struct sink *s, const struct result *r)
 		    tmpl_builtin(w->tmpl, w->vars) : NULL;
 		struct plan P;
 
-		/* Not itself, nor what writes the scene instead of organs. */
+		/*
+		 * Not itself, nor what writes the scene instead of organs,
+		 * nor meshes that are not there (a warning said so).
+		 */
 		if (w->write == info_write || w->scenes != NULL ||
-		    (w->tmpl != NULL && t == NULL))
+		    (w->tmpl != NULL && t == NULL) || ((w->opts & TO_MESHES) &&
+		    r->meshes != NULL && r->meshes->missing)) {
+			tmpl_free(t);
 			continue;
+		}
 		plan_make(&P, w, t, r);
 		size_item(s, &first, w->name, plan_bytes(&P, w, t, TMPL_ALL,
 		    0));

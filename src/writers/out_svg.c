@@ -31,6 +31,7 @@ static double (*project(const struct result *r, int *unrolled))[2]
 	double zlo = HUGE_VAL, zhi = -HUGE_VAL, rhomax = 0;
 	double S[BINS + 1], br[BINS], bz[BINS];
 	size_t N = r->count;
+	int nb;
 
 	for (size_t i = 0; i < N; i++) {
 		const double *q = r->organs[i].pos;
@@ -48,9 +49,14 @@ static double (*project(const struct result *r, int *unrolled))[2]
 		}
 		return p;
 	}
-	/* The generating curve through the bins' mean (rho, z), by index. */
-	for (int b = 0; b < BINS; b++) {
-		size_t from = N * (size_t)b / BINS, to = N * (size_t)(b + 1) / BINS;
+	/*
+	 * The generating curve through the bins' mean (rho, z), by index;
+	 * no more bins than organs, or some would be empty, at (0, 0).
+	 */
+	nb = N < BINS ? (int)N : BINS;
+	for (int b = 0; b < nb; b++) {
+		size_t from = N * (size_t)b / (size_t)nb;
+		size_t to = N * (size_t)(b + 1) / (size_t)nb;
 		double sr = 0, sz = 0;
 
 		for (size_t i = from; i < to; i++) {
@@ -61,7 +67,7 @@ static double (*project(const struct result *r, int *unrolled))[2]
 		bz[b] = to > from ? sz / (double)(to - from) : 0;
 	}
 	S[0] = 0;
-	for (int b = 1; b < BINS; b++)
+	for (int b = 1; b < nb; b++)
 		S[b] = S[b - 1] + hypot(br[b] - br[b - 1], bz[b] - bz[b - 1]);
 	for (size_t i = 0; i < N; i++) {
 		const double *q = r->organs[i].pos;
@@ -74,7 +80,7 @@ static double (*project(const struct result *r, int *unrolled))[2]
 		 * not place in order of height), so that a spiral through it
 		 * bends where the organs do, and nowhere else.
 		 */
-		for (int b = 0; b + 1 < BINS; b++) {
+		for (int b = 0; b + 1 < nb; b++) {
 			double dr = br[b + 1] - br[b], dz = bz[b + 1] - bz[b];
 			double len2 = dr * dr + dz * dz, u = len2 > 0 ?
 			    ((rho - br[b]) * dr + (q[2] - bz[b]) * dz) / len2 : 0;
@@ -131,10 +137,11 @@ sample_circle(void *ctx, const struct organ *o, double weight)
 	circle(s, o->pos[0], o->pos[1], o);
 	/*
 	 * An organ ends a step of each of its two families at most: a
-	 * Bezier each, three points of two numbers.
+	 * Bezier each, three points of two numbers, and a chain's start
+	 * (a point more) each, a family's single steps being chains.
 	 */
-	for (int k = 0; k < 2 * 3; k++) {
-		sink_putc(s, k % 3 == 0 ? 'C' : ' ');
+	for (int k = 0; k < 2 * 4; k++) {
+		sink_putc(s, k % 4 == 0 ? 'C' : ' ');
 		sink_num(s, o->pos[0]);
 		sink_putc(s, ',');
 		sink_num(s, o->pos[1]);
@@ -216,21 +223,28 @@ struct page {
 	size_t		 nlabels;
 };
 
+/* Whether the step from organ a to organ b does not leap (the unrolled
+ * picture's seam, a jump across the head). */
+static int
+near(const struct page *P, size_t a, size_t b)
+{
+	const double *pa = P->p[a], *pb = P->p[b];
+
+	return hypot(pb[0] - pa[0], pb[1] - pa[1]) <=
+	    4 * (P->r->organs[a].radius + P->r->organs[b].radius);
+}
+
 /*
  * Whether the step from organ j - f to organ j belongs to a family f:
  * j - f is one of j's own contact neighbours, and the step does not
- * leap (the unrolled picture's seam).  Chains of such steps stop where
- * the pattern changes, instead of zig-zagging across a transition.
+ * leap.  Chains of such steps stop where the pattern changes, instead
+ * of zig-zagging across a transition.
  */
 static int
 step(const struct page *P, size_t j, int f)
 {
-	const struct organ *a = &P->r->organs[j - (size_t)f];
-	const struct organ *b = &P->r->organs[j];
-	const double *pa = P->p[j - (size_t)f], *pb = P->p[j];
-
 	return (P->pair[j][0] == f || P->pair[j][1] == f) &&
-	    hypot(pb[0] - pa[0], pb[1] - pa[1]) <= 4 * (a->radius + b->radius);
+	    near(P, j - (size_t)f, j);
 }
 
 /* The turn about the axis from organ a to organ b, in (-180, 180]. */
@@ -347,46 +361,66 @@ static const char *const family_colours[] = { "#b01c2e", "#1f4fb5",
 #define NCOLOURS	(sizeof(family_colours) / sizeof(family_colours[0]))
 
 /*
- * Family f: every chain of contact steps j - f -> j over the whole
- * structure, wherever f is a contact, as a curve, in one path (none
- * without a chain); its count placed at a chain's end nearest the rim
- * or base.  ci: its colour.
+ * The chain of family f from organ i (no step leads to it) into chain;
+ * its length.  It runs while its steps are contacts and turn the way
+ * its first did: where a family's turn changes sign (a divergence
+ * passing f steps to a whole number of turns) it is spokes there, not
+ * a spiral.  A family of the innermost pair also runs back from where
+ * the measurement starts towards the centre, through organs too few
+ * to have their contacts yet: its spirals start there, and cut off at
+ * the first zone they would meet as a ring of short arcs.
  */
-static void
-family(struct sink *s, struct page *P, size_t ci, int f)
+static size_t
+chain_from(const struct page *P, size_t i, int f, int inner, size_t *chain)
 {
-	size_t count = P->r->count;
+	size_t count = P->r->count, s = i, n = 0, F = (size_t)f;
+
+	while (inner && i < P->first + F && s >= F && near(P, s - F, s) &&
+	    (s + F > i || turn(P, s - F, s) * turn(P, s, s + F) > 0))
+		s -= F;
+	chain[n++] = s;
+	while (chain[n - 1] + F < count &&
+	    (chain[n - 1] + F <= i || step(P, chain[n - 1] + F, f)) &&
+	    (n < 2 || turn(P, chain[n - 2], chain[n - 1]) *
+	    turn(P, chain[n - 1], chain[n - 1] + F) > 0))
+		chain[n] = chain[n - 1] + F, n++;
+	return n;
+}
+
+/*
+ * Family f: every chain of contact steps j - f -> j over the whole
+ * structure, wherever f is a contact, as a curve, in one path; its count
+ * placed at a chain's end nearest the rim or base.  ci: its colour;
+ * inner: a family of the innermost pair.  Chains of two steps at least,
+ * one alone being no spiral to follow -- but where a zone is too short
+ * to hold two (the rim's newest family, often), its single steps: the
+ * legend names no family the picture does not draw.  Whether any was.
+ */
+static int
+family(struct sink *s, struct page *P, size_t ci, int f, int inner)
+{
+	size_t count = P->r->count, F = (size_t)f;
 	size_t *chain = xcalloc(count + 1, sizeof(*chain));
 	size_t *ends = xcalloc(count + 1, sizeof(*ends)), nends = 0;
+	size_t least = 3;
 	int open = 0;
 
+again:
 	/*
-	 * From the first organ the analysis measures: before it, too few
-	 * organs have their contacts yet (a head's centre), and chains
-	 * there would loop about nothing.
+	 * From the first organ the analysis measures, or a step before it
+	 * where the step is a contact of the organ measured: before them,
+	 * too few organs have their contacts yet (a head's centre), and
+	 * chains there would loop about nothing.
 	 */
-	for (size_t i = P->first; i < count; i++) {
-		size_t n = 0;
+	for (size_t i = P->first > F ? P->first - F : 0; i < count; i++) {
+		size_t n;
 
-		/*
-		 * A chain starts where no step leads to it, and runs while its
-		 * steps turn the way its first did: where a family's turn
-		 * changes sign (a divergence passing f steps to a whole number
-		 * of turns) it is spokes there, not a spiral.
-		 */
-		if (i >= P->first + (size_t)f && step(P, i, f) &&
-		    (i < P->first + 2 * (size_t)f || !step(P, i - (size_t)f, f) ||
-		    turn(P, i - 2 * (size_t)f, i - (size_t)f) *
-		    turn(P, i - (size_t)f, i) > 0))
+		/* A chain starts where no step leads to it. */
+		if (i >= P->first + F && step(P, i, f) &&
+		    (i < P->first + 2 * F || !step(P, i - F, f) ||
+		    turn(P, i - 2 * F, i - F) * turn(P, i - F, i) > 0))
 			continue;
-		chain[n++] = i;
-		while (chain[n - 1] + (size_t)f < count &&
-		    step(P, chain[n - 1] + (size_t)f, f) &&
-		    (n < 2 || turn(P, chain[n - 2], chain[n - 1]) *
-		    turn(P, chain[n - 1], chain[n - 1] + (size_t)f) > 0))
-			chain[n] = chain[n - 1] + (size_t)f, n++;
-		/* Two steps at least: one alone is no spiral to follow. */
-		if (n < 3)
+		if ((n = chain_from(P, i, f, inner, chain)) < least)
 			continue;
 		if (!open) {
 			sink_puts(s, "<path fill=\"none\" stroke=\"");
@@ -399,12 +433,22 @@ family(struct sink *s, struct page *P, size_t ci, int f)
 		curve(s, P, chain, n);
 		ends[nends++] = P->r->rim_last ? chain[n - 1] : chain[0];
 	}
+	if (!open && least == 3) {
+		least = 2;
+		goto again;
+	}
 	if (open)
 		sink_puts(s, "\"/>\n");
-	/* The ends nearest the rim or base first. */
+	/*
+	 * The ends nearest the rim or base first; ends level to a
+	 * millionth of a label's size are a tie, kept in organ order: a
+	 * row at the base is level but for residues of rounding, which
+	 * differ from one maths library to another (glibc's, mingw-w64's,
+	 * WebAssembly's musl) and would move the label between them.
+	 */
 	for (size_t i = 1; i < nends; i++)
 		for (size_t j = i; j > 0 && outwardness(P, ends[j]) >
-		    outwardness(P, ends[j - 1]); j--) {
+		    outwardness(P, ends[j - 1]) + 1e-6 * P->em; j--) {
 			size_t t = ends[j];
 
 			ends[j] = ends[j - 1];
@@ -413,6 +457,7 @@ family(struct sink *s, struct page *P, size_t ci, int f)
 	place_label(P, ends, nends, (int)ci, f);
 	free(chain);
 	free(ends);
+	return open;
 }
 
 /* The families the zones name, each once, smallest first; how many. */
@@ -548,11 +593,20 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 	P->first = nz > 0 ? (size_t)z[0].from : 0;
 	nf = families(z, nz, f, 128);
 	if (r->unordered != NULL)
-		unordered_svg_families(s, r, P->p, f, nf, family_colours,
+		nf = unordered_svg_families(s, r, P->p, f, nf, family_colours,
 		    NCOLOURS, P->width);
 	else
-		for (size_t i = 0; i < nf; i++)
-			family(s, P, i, f[i]);
+		for (size_t i = 0, k = 0; i < nf; i++) {
+			/* The centre's family, where its organs come first. */
+			int inner = r->rim_last && (f[i] == z[0].m ||
+			    f[i] == z[0].n);
+
+			/* The key lists what is drawn, in its colour. */
+			if (family(s, P, k, f[i], inner))
+				f[k++] = f[i];
+			if (i + 1 == nf)
+				nf = k;
+		}
 	for (size_t i = 0; i < P->nlabels; i++) {
 		const struct label *l = &P->label[i];
 

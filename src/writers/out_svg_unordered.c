@@ -77,7 +77,7 @@ leaps(const struct result *r, double (*page)[2], size_t a, size_t b)
  * is (the nearest, if more than one); chains run from an organ with no
  * such contact of its own along next, in one path.
  */
-static void
+static int
 family(struct sink *s, const struct result *r, double (*page)[2], int f,
     const char *colour, double width, long *next, char *has)
 {
@@ -126,23 +126,27 @@ family(struct sink *s, const struct result *r, double (*page)[2], int f,
 	if (open)
 		sink_puts(s, "\"/>\n");
 	free(chain);
+	return open;
 }
 
-void
+size_t
 unordered_svg_families(struct sink *s, const struct result *r,
-    double (*page)[2], const int *f, size_t nf, const char *const *colours,
+    double (*page)[2], int *f, size_t nf, const char *const *colours,
     size_t ncolours, double width)
 {
 	long *next = xcalloc(r->count + 1, sizeof(*next));
 	char *has = xcalloc(r->count + 1, sizeof(*has));
+	size_t k = 0;
 
-	for (size_t k = 0; k < nf; k++)
-		family(s, r, page, f[k], colours[k % ncolours], width, next,
-		    has);
+	/* The key lists what is drawn, in its colour. */
+	for (size_t i = 0; i < nf; i++)
+		if (family(s, r, page, f[i], colours[k % ncolours], width,
+		    next, has))
+			f[k++] = f[i];
 	free(next);
 	free(has);
 	if (r->svg == PROJ_UNROLL || r->count == 0)
-		return;
+		return k;
 	/*
 	 * The centre used: the axis, at the origin of a head; a cross in a
 	 * diamond (no circle nor path: those are the organs and families).
@@ -165,6 +169,7 @@ unordered_svg_families(struct sink *s, const struct result *r,
 		sink_puts(s, "\"/>");
 	}
 	sink_puts(s, "</g>\n");
+	return k;
 }
 
 void

@@ -7,25 +7,32 @@
  * Devices and pipes named with -o (/dev/stdout, /dev/full) are written
  * directly.
  *
+ * The temporary is named for what it is, FILE.phyllo-export-PID.tmp,
+ * not hidden: a run killed by SIGKILL (or a power cut) cannot remove it,
+ * and a user who finds it must see whose it is.  The next run to the
+ * same FILE removes those of processes that no longer run.
+ *
  * Temporary files are removed on error, on exit() from anywhere (out
- * of memory) and on SIGINT, SIGTERM, SIGHUP and SIGPIPE.  SIGXFSZ is
- * ignored, so that a file size limit (ulimit -f) is a write error with
- * a message, not a kill that leaves a temporary file behind.
+ * of memory) and on the signals that end a program (sys_on_signal():
+ * SIGINT, SIGTERM, SIGHUP and SIGPIPE; Ctrl-C on Windows).  A file size
+ * limit (ulimit -f) is a write error with a message, not a kill that
+ * leaves a temporary file behind.
  *
  * -o never names a file the run reads: the scene, a part's scene, the
  * template (output_input() lists them), so that a slip of the keyboard
- * (phyllo-export --pov -o my.cfg my.cfg) cannot destroy a scene.
+ * (phyllo-export --pov -o my.cfg my.cfg) cannot destroy a scene.  Nor
+ * one the user may not write: a rename would replace a read-only file
+ * that the shell's > and cp refuse to touch.  Nor, on Windows, a
+ * device's name (NUL, CON), which no file can have.
  */
 #include <errno.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "compat/compat.h"
 #include "diag.h"
 #include "mem.h"
 #include "writers/output.h"
@@ -38,9 +45,8 @@ struct pending {
 
 /* A file read, by identity: another path or a link is the same file. */
 struct input {
-	dev_t	 dev;
-	ino_t	 ino;
-	char	*path, *what;
+	struct sys_id	 id;
+	char		*path, *what;
 };
 
 static struct input *inputs;
@@ -57,31 +63,27 @@ remove_tmps(void)
 {
 	while (npend > 0) {
 		npend--;
-		unlink(pend[npend].tmp);
+		sys_remove(pend[npend].tmp);
 		free(pend[npend].target);
 	}
 }
 
+/* On a signal: only what a signal handler may do. */
 static void
-on_signal(int sig)
+remove_on_signal(void)
 {
 	for (sig_atomic_t i = 0; i < npend; i++)
-		unlink(pend[i].tmp);
-	signal(sig, SIG_DFL);
-	raise(sig);
+		sys_remove(pend[i].tmp);
 }
 
 static void
 catch_signals(void)
 {
-	static const int sigs[] = { SIGINT, SIGTERM, SIGHUP, SIGPIPE };
 	static int done;
 
-	if (done++)
-		return;
-	atexit(remove_tmps);
-	for (size_t i = 0; i < sizeof(sigs) / sizeof(sigs[0]); i++)
-		signal(sigs[i], on_signal);
+	sys_on_signal(remove_on_signal);
+	if (!done++)
+		atexit(remove_tmps);
 }
 
 static void
@@ -99,134 +101,179 @@ free_inputs(void)
 void
 output_input(const char *path, const char *what)
 {
-	struct stat st;
+	struct sys_stat st;
 
-	if (stat(path, &st) != 0)
+	if (sys_stat(path, &st) != 0)
 		return;
 	if (inputs == NULL)
 		atexit(free_inputs);
 	inputs = xreallocarray(inputs, ninputs + 1, sizeof(*inputs));
-	inputs[ninputs++] = (struct input){ st.st_dev, st.st_ino,
-	    xstrdup(path), xstrdup(what) };
+	inputs[ninputs++] = (struct input){ st.id, xstrdup(path),
+	    xstrdup(what) };
 }
 
 int
 output_check(const char *path)
 {
-	struct stat st;
+	struct sys_stat st;
+	const char *why;
 
-	if (path == NULL || stat(path, &st) != 0)
+	if (path != NULL && (why = sys_bad_name(path)) != NULL) {
+		diag(ST_USAGE, NULL, 0, 0, "-o %s: %s: give another name",
+		    path, why);
+		return -1;
+	}
+	if (path == NULL || sys_stat(path, &st) != 0)
 		return 0;
 	for (size_t i = 0; i < ninputs; i++)
-		if (inputs[i].dev == st.st_dev && inputs[i].ino == st.st_ino) {
+		if (SYS_SAME(inputs[i].id, st.id)) {
 			diag(ST_USAGE, NULL, 0, 0, "-o %s would replace %s, %s%s: "
 			    "give another output file", path, inputs[i].path,
 			    inputs[i].what, strcmp(path, inputs[i].path) != 0 ?
 			    " (the same file by another name)" : "");
 			return -1;
 		}
+	if (st.kind == SYS_REG && !sys_writable(path)) {
+		diag(ST_SYSTEM, path, 0, 0, "%s: -o replaces only a file you may "
+		    "write", strerror(errno));
+		return -1;
+	}
 	return 0;
 }
 
-/*
- * The file a path names once symbolic links are followed, so that -o
- * through a link replaces the link's target and not the link; the
- * target need not exist yet.  0, or -1 after a diagnostic.
- */
+/* The temporary of target written by process pid. */
+#define TMP_TAG	".phyllo-export-"
+#define TMP_END	".tmp"
+
 static int
-follow_links(const char *path, char *buf, size_t sz)
+tmp_name(char *buf, size_t sz, const char *target, long pid)
 {
-	char link[PATH_MAX], next[PATH_MAX];
-	struct stat st;
+	return snprintf(buf, sz, "%s" TMP_TAG "%ld" TMP_END, target, pid) >=
+	    (int)sz ? -1 : 0;
+}
 
-	if (snprintf(buf, sz, "%s", path) >= (int)sz)
-		goto toolong;
-	for (int hops = 0; lstat(buf, &st) == 0 && S_ISLNK(st.st_mode);
-	    hops++) {
-		ssize_t n = readlink(buf, link, sizeof(link) - 1);
-		const char *slash = strrchr(buf, '/');
-		int dir = slash != NULL && link[0] != '/' ?
-		    (int)(slash - buf + 1) : 0;
+/*
+ * Remove the temporaries of target that runs killed before they could
+ * (SIGKILL, a crash of the machine) left: ours by their name, stale by
+ * their process.
+ */
+static void
+remove_stale(const char *target, int dirlen)
+{
+	const char *base = target + dirlen;
+	size_t blen = strlen(base);
+	char dir[PATH_MAX], stale[PATH_MAX];
+	struct sys_dir *d;
+	const char *p;
 
-		if (n < 0 || hops == 40) {
-			diag(ST_SYSTEM, path, 0, 0, "%s", n < 0 ?
-			    strerror(errno) : strerror(ELOOP));
-			return -1;
-		}
-		link[n] = '\0';
-		if (snprintf(next, sizeof(next), "%.*s%s", dir, buf, link) >=
-		    (int)sizeof(next) || snprintf(buf, sz, "%s", next) >= (int)sz)
-			goto toolong;
+	if (snprintf(dir, sizeof(dir), "%.*s", dirlen ? dirlen : 1,
+	    dirlen ? target : ".") >= (int)sizeof(dir) ||
+	    (d = sys_opendir(dir)) == NULL)
+		return;
+	while ((p = sys_readdir(d)) != NULL) {
+		char *end;
+		long pid;
+
+		if (strncmp(p, base, blen) != 0 ||
+		    strncmp(p += blen, TMP_TAG, strlen(TMP_TAG)) != 0)
+			continue;
+		p += strlen(TMP_TAG);
+		if (*p < '1' || *p > '9')
+			continue;
+		pid = strtol(p, &end, 10);
+		if (strcmp(end, TMP_END) != 0 || pid == sys_pid() ||
+		    sys_running(pid) ||
+		    tmp_name(stale, sizeof(stale), target, pid) != 0)
+			continue;
+		sys_remove(stale);
 	}
-	return 0;
-toolong:
-	diag(ST_SYSTEM, path, 0, 0, "file name too long");
-	return -1;
+	sys_closedir(d);
+}
+
+/*
+ * Create target's temporary, only ours; its name in buf.  The stream,
+ * or NULL with errno, ENAMETOOLONG for a name too long.  One of our own
+ * number exists only if a process of that number before us left it.
+ */
+static FILE *
+create_tmp(char *buf, size_t sz, const char *target)
+{
+	FILE *fp;
+
+	if (tmp_name(buf, sz, target, sys_pid()) != 0) {
+		errno = ENAMETOOLONG;
+		return NULL;
+	}
+	fp = sys_create(buf);
+	if (fp == NULL && errno == EEXIST && sys_remove(buf) == 0)
+		fp = sys_create(buf);
+	return fp;
+}
+
+/* Why no file can be made beside target, after create_tmp() failed. */
+static const char *
+dir_problem(const char *target, int dirlen)
+{
+	static char why[PATH_MAX + 64];
+	int err = errno;
+
+	if (dirlen == 0)
+		snprintf(why, sizeof(why), "cannot create a file in the "
+		    "current directory: %s", strerror(err));
+	else if (err == ENOENT)
+		snprintf(why, sizeof(why), "directory %.*s does not exist",
+		    dirlen > 1 ? dirlen - 1 : dirlen, target);
+	else if (err == ENOTDIR)
+		snprintf(why, sizeof(why), "%.*s is not a directory",
+		    dirlen > 1 ? dirlen - 1 : dirlen, target);
+	else
+		snprintf(why, sizeof(why), "cannot create a file in %.*s: %s",
+		    dirlen, target, strerror(err));
+	return why;
 }
 
 FILE *
 output_open(const char *path)
 {
 	struct pending *p;
-	struct stat st;
-	const char *slash;
+	struct sys_stat st;
 	char target[PATH_MAX];
-	mode_t mode;
-	int fd, dirlen, had;
+	int dirlen, had;
 
-	signal(SIGXFSZ, SIG_IGN);
+	catch_signals();
 	if (path == NULL)
 		return out = stdout;
 	display = path;
-	if (follow_links(path, target, sizeof(target)) != 0)
+	if (sys_follow(path, target, sizeof(target)) != 0) {
+		diag(ST_SYSTEM, path, 0, 0, "%s", errno == ENAMETOOLONG ?
+		    "file name too long" : strerror(errno));
 		return NULL;
-	had = stat(target, &st) == 0;
-	if (had && !S_ISREG(st.st_mode)) {
-		if ((out = fopen(path, "w")) == NULL)
+	}
+	had = sys_stat(target, &st) == 0;
+	if (had && st.kind != SYS_REG) {
+		if ((out = sys_fopen(path, "wb")) == NULL)
 			diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));
 		return out;
 	}
-	catch_signals();
 	if ((size_t)npend == cap) {
 		/* Grown with signals held: the handler walks pend. */
-		sigset_t all, old;
-
-		sigfillset(&all);
-		sigprocmask(SIG_BLOCK, &all, &old);
+		sys_hold(1);
 		pend = xreallocarray(pend, cap = cap * 2 + 4, sizeof(*pend));
-		sigprocmask(SIG_SETMASK, &old, NULL);
+		sys_hold(0);
 	}
 	p = &pend[npend];
-	slash = strrchr(target, '/');
-	dirlen = slash != NULL ? (int)(slash - target + 1) : 0;
-	if (snprintf(p->tmp, sizeof(p->tmp), "%.*s.%s.XXXXXX", dirlen, target,
-	    target + dirlen) >= (int)sizeof(p->tmp)) {
-		diag(ST_SYSTEM, path, 0, 0, "file name too long");
-		return NULL;
-	}
-	if ((fd = mkstemp(p->tmp)) < 0) {
-		diag(ST_SYSTEM, path, 0, 0, "cannot create a file beside "
-		    "it: %s", strerror(errno));
+	dirlen = (int)(sys_base(target) - target);
+	remove_stale(target, dirlen);
+	if ((out = create_tmp(p->tmp, sizeof(p->tmp), target)) == NULL) {
+		diag(ST_SYSTEM, path, 0, 0, "%s", errno == ENAMETOOLONG ?
+		    "file name too long" : dir_problem(target, dirlen));
 		return NULL;
 	}
 	p->target = xstrdup(target);
 	npend++;
-	/*
-	 * mkstemp makes 0600: give an existing file's own mode and owner
-	 * (the owner only where we may), else what a plain create would.
-	 */
-	if (had) {
-		mode = st.st_mode & 07777;
-		if (fchown(fd, st.st_uid, st.st_gid) != 0)
-			mode &= 0777;	/* no set-id bits for another owner */
-	} else {
-		mode = umask(0);
-		umask(mode);
-		mode = 0666 & ~mode;
-	}
-	if (fchmod(fd, mode) != 0 || (out = fdopen(fd, "w")) == NULL) {
+	/* An existing file's own mode and owner, else a plain create's. */
+	if (sys_permit(out, had ? target : NULL) != 0) {
 		diag(ST_SYSTEM, path, 0, 0, "%s", strerror(errno));
-		close(fd);
 		output_abort();
 		return NULL;
 	}
@@ -260,9 +307,10 @@ output_commit(void)
 	if (out != NULL && output_close() != 0)
 		return -1;
 	for (sig_atomic_t i = 0; i < npend; i++)
-		if (rename(pend[i].tmp, pend[i].target) != 0) {
-			diag(ST_SYSTEM, pend[i].target, 0, 0, "%s",
-			    strerror(errno));
+		if (sys_replace(pend[i].tmp, pend[i].target) != 0) {
+			diag(ST_SYSTEM, pend[i].target, 0, 0, "%s", errno ==
+			    EBUSY ? "another program has the file open: close "
+			    "it there and run again" : strerror(errno));
 			output_abort();
 			return -1;
 		}

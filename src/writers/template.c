@@ -33,10 +33,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "compat/compat.h"
 #include "diag.h"
 #include "result/flatten.h"
 #include "mem.h"
+#include "phyllo.h"
 #include "scene/suggest.h"
+#include "writers/output.h"
 #include "writers/template.h"
 
 
@@ -309,7 +312,7 @@ tmpl_parse(const char *file, const char *text, size_t len,
 struct tmpl *
 tmpl_load(const char *path, const struct tmpl_var *extra)
 {
-	FILE *fp = fopen(path, "rb");
+	FILE *fp = sys_fopen(path, "rb");
 	struct tmpl *t;
 	char *buf;
 	size_t len;
@@ -353,6 +356,23 @@ tmpl_builtin(const char *name, const struct tmpl_var *extra)
 		}
 	diag(ST_SYSTEM, NULL, 0, 0, "no built-in template %s", name);
 	return NULL;
+}
+
+void
+tmpl_shipped_inputs(void)
+{
+	char path[4096];
+
+	for (const struct builtin_template *b = builtin_templates;
+	    b->name != NULL; b++) {
+		/* A program that travels (SHAREDIR empty) has none. */
+		if (SHAREDIR[0] != '\0') {
+			snprintf(path, sizeof(path), "%s/%s", SHAREDIR, b->name);
+			output_input(path, "a template phyllo-export installs");
+		}
+		output_input(b->source, "a template phyllo-export is built "
+		    "from");
+	}
 }
 
 static void	write_run(const struct tmpl *, size_t from, size_t to,

@@ -24,6 +24,7 @@
 				   each reads */
 #define TO_LISTING	0x40	/* lists settings the others leave unused,
 				   given or not: the loader keeps them */
+#define TO_BINARY	0x80	/* bytes, not text: never to a terminal */
 
 struct tmpl_ctx {
 	const struct result	*r;
@@ -93,7 +94,14 @@ struct builtin_template {
 	const char		*name;
 	const unsigned char	*text;
 	size_t			 len;
+	const char		*source;	/* the file, when built */
 };
 extern const struct builtin_template builtin_templates[];
+/*
+ * Tell output_input() the templates phyllo-export ships, installed in
+ * SHAREDIR and the files the build embedded: -o replacing one would make
+ * a user's output every later run's default.
+ */
+void	tmpl_shipped_inputs(void);
 
 #endif

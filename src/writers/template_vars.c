@@ -8,6 +8,7 @@
 #include <ctype.h>
 #include <string.h>
 
+#include "compat/compat.h"
 #include "phyllo.h"
 #include "result/flatten.h"
 #include "writers/template.h"
@@ -48,9 +49,8 @@ static void put_part(struct sink *s, const struct tmpl_ctx *c)
 static void
 put_scene(struct sink *s, const struct tmpl_ctx *c)
 {
-	const char *base = strrchr(c->r->source, '/');
-
-	for (base = base ? base + 1 : c->r->source; *base != '\0'; base++) {
+	for (const char *base = sys_base(c->r->source); *base != '\0';
+	    base++) {
 		unsigned char ch = (unsigned char)*base;
 		int safe = (ch < 0x80 && isalnum(ch)) || strchr(".-_", ch);
 

@@ -23,11 +23,12 @@ double	(*unordered_svg_page(const struct result *, int *unrolled))[2];
 
 /*
  * The families f[0 .. nf) as curves through the organs each contact
- * joins, in colours[k % ncolours] (by rank, as the models' are drawn),
- * width wide; and a mark where the centre is.
+ * joins, in colours[k % ncolours] (k the rank among those drawn, as the
+ * models' are), width wide; and a mark where the centre is.  f keeps
+ * the families drawn, in order; their number is returned.
  */
-void	unordered_svg_families(struct sink *, const struct result *,
-	    double (*page)[2], const int *f, size_t nf,
+size_t	unordered_svg_families(struct sink *, const struct result *,
+	    double (*page)[2], int *f, size_t nf,
 	    const char *const *colours, size_t ncolours, double width);
 
 /* The legend's line on the divergence: measured, with its error. */

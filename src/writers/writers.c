@@ -10,7 +10,8 @@ const struct writer writers[] = {
 	{ "blender", NULL, NULL, NULL, "blender.tmpl", NULL,
 	  TO_OBJECTS | TO_ANIMATE | TO_SHALLOW, blender_vars, NULL,
 	  "a Python script that builds the structure in Blender" },
-	{ "gltf", gltf_write, gltf_bytes, NULL, NULL, NULL, TO_MESHES, NULL,
+	{ "gltf", gltf_write, gltf_bytes, NULL, NULL, NULL,
+	  TO_MESHES | TO_BINARY, NULL,
 	  NULL, "binary glTF 2.0 (.glb): each organ object's mesh, "
 	  "GPU-instanced" },
 	{ "csv", csv_write, csv_bytes, NULL, NULL, NULL, TO_FLATTEN, NULL,

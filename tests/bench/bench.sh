@@ -113,6 +113,7 @@ echo "== collision model on every receptacle, fill and radius law, one core"
 # row's figure is its best round, so a row that one round caught on a
 # slow minute does not set it, and the two codes' rows are measured
 # minutes apart, not a run apart.  The first round's own lines first.
+# BENCH_CPU=1: each case's CPU time, not the clock's (a shared machine).
 R=${MATRIX_ROUNDS:-3}
 i=1
 while [ "$i" -le "$R" ]; do
@@ -189,7 +190,7 @@ echo "$gltf $csv $(wc -c <"$OUT/planar.glb") $one $N" | awk '{
 	printf "model + glTF (--gltf): %.3f s = %.2f M organs/s, %.2fx --csv (%.3f s)\n", $1, $5 / $1 / 1e6, $1 / $2, $2
 	printf "glTF size: %d bytes, %.2f bytes an organ beyond the mesh (a one-organ file is %d)\n", $3, ($3 - $4) / ($5 - 1), $4
 }'
-if [ -n "${NODE:-}" ] && [ -n "${CHROMIUM:-}" ] && [ -d web/node_modules/three ]; then
+if [ -n "${NODE:-}" ] && [ -n "${CHROMIUM:-}" ] && [ -d src/viewer/node_modules/three ]; then
 	# three.js in headless Chromium (software GL): fetch, GLTFLoader's
 	# parse into InstancedMeshes, and the first frame drawn.
 	"$NODE" tests/gltf/three.mjs --time "$CHROMIUM" "$OUT/planar.glb" |
@@ -197,6 +198,13 @@ if [ -n "${NODE:-}" ] && [ -n "${CHROMIUM:-}" ] && [ -d web/node_modules/three ]
 			const f = JSON.parse(s);
 			console.log(`three.js, ${f.organs} organs (${(f.bytes / 1e6).toFixed(1)} MB): fetch ${f.fetchMs.toFixed(0)} ms, parse ${f.parseMs.toFixed(0)} ms, first frame ${f.firstFrameMs.toFixed(0)} ms${f.errors.length ? "; errors: " + f.errors : ""}`);
 		})'
+fi
+
+# The WebAssembly build (make web, in WEB where configure found emcc):
+# the module in Node.js beside the native program, and the page.
+if [ -n "${WEB:-}" ] && [ -n "${NODE:-}" ]; then
+	echo "== the WebAssembly build (make web), one core"
+	"$NODE" tests/bench/web.mjs "$PHYLLO" "$WEB" "$OUT" ${CHROMIUM:+"$CHROMIUM"}
 fi
 
 echo "== POV-Ray include, $N organs"

@@ -23,7 +23,7 @@ st.live = False     # each change rebuilt by Update, whatever its time
 best = None
 for i in range(3):
     start = time.perf_counter()
-    scale.number = 0.01 + 0.001 * (i + 1)
+    scale.text = "%g" % (0.01 + 0.001 * (i + 1))
     bpy.ops.phyllo.update()
     # Evaluated: the geometry nodes have made the new instances.
     bpy.context.evaluated_depsgraph_get()

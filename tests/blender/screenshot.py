@@ -13,7 +13,12 @@
 #       < /dev/null > log &
 #   (wait for "screenshot: ready" in log) xwd -root -display :7 |
 #       convert xwd:- OUT.png
-# with PHYLLO_EXPORT naming the program if it is not on PATH.
+# with PHYLLO_EXPORT naming the program if it is not on PATH.  A Debian
+# root's Blender (tests/tools/blender-root.sh) has no OpenGL of its own:
+# chroot ROOT apt-get install libgl1-mesa-dri libglx-mesa0 libegl-mesa0,
+# and Xvfb -listen tcp, DISPLAY=127.0.0.1:7 (the chroot shares the
+# network, not /tmp's X socket).  README's picture: the sid root's
+# Blender 5.2 on the coneflower, cut to 1290 x 910, scaled to 1000 wide.
 import sys
 
 import bpy
@@ -26,6 +31,7 @@ if not hasattr(bpy.types, "IMPORT_SCENE_OT_phyllotaxis"):
 if bpy.app.background:
     # A first run, headless: the add-on installed and the preferences
     # saved, so that the window's run shows no first-start splash.
+    bpy.context.preferences.view.show_splash = False
     bpy.ops.wm.save_userpref()
     raise SystemExit(0)
 for ob in list(bpy.data.objects):

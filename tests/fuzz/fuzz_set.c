@@ -2,9 +2,11 @@
  * fuzz_set.c - libFuzzer harness for --set: the input's first line is
  * the argument (OBJECT:PATH=VALUE), the rest a scene file.  The
  * argument is parsed, put into the scene as it loads (keeping every
- * setting as written), spliced into the scene's text as --cfg does, and
- * its strings written as JSON as --settings does; loaded again as
- * --settings loads it, keeping settings the others leave unused.
+ * setting as written), spliced into the scene's text as --cfg does and
+ * its path taken out of the text as --cfg takes out a setting a --set
+ * leaves unused, and its strings written as JSON as --settings does;
+ * loaded again as --settings loads it, keeping settings the others
+ * leave unused.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -47,10 +49,12 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			size_t n;
 			char *spliced = cfgtext_splice(sc.text, sc.len, o.path,
 			    o.value, &n);
+			char *cut = cfgtext_cut(sc.text, sc.len, o.path, &n);
 
 			for (size_t i = 0; i < sc.nwritten; i++)
 				json_string(&s, sc.written[i].text);
 			free(spliced);
+			free(cut);
 		}
 		scene_free(&sc);
 	}

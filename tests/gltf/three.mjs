@@ -132,7 +132,8 @@ async function open(browser, base, glb, view, width = 640, height = 480) {
   const errors = [];
   page.on('pageerror', e => errors.push(e.message));
   page.on('console', m => { if (m.type() === 'error') errors.push(m.text()); });
-  await page.goto(`${base}/src/viewer/viewer.html?glb=/${glb}${view ? '&view=' + view : ''}`);
+  // As README names it: a path from where the server was started.
+  await page.goto(`${base}/src/viewer/viewer.html?glb=${glb}${view ? '&view=' + view : ''}`);
   const facts = await page.evaluate(() => window.viewer.ready);
   return { page, facts, errors };
 }

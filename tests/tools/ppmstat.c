@@ -4,6 +4,8 @@
  *	ppmstat FILE R G B TOL	pixels within TOL of (R, G, B) in each
  *				channel: "count total cx cy" (centroid)
  *	ppmstat FILE at COL ROW	the colour of one pixel: "R G B"
+ *	ppmstat FILE diff OTHER	pixels whose colour differs from OTHER's,
+ *				of the same size: "count total maxdiff"
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,6 +73,32 @@ main(int argc, char *argv[])
 		free(px);
 		return 0;
 	}
+	if (argc == 4 && strcmp(argv[2], "diff") == 0) {
+		unsigned char *other;
+		int w2, h2, most = 0;
+		long n = 0;
+
+		px = load(argv[1], &w, &h);
+		other = load(argv[3], &w2, &h2);
+		if (w != w2 || h != h2) {
+			free(px);
+			free(other);
+			return 2;
+		}
+		for (size_t i = 0; i < (size_t)w * (size_t)h; i++) {
+			int d = 0;
+
+			for (int k = 0; k < 3; k++)
+				if (abs(px[3 * i + k] - other[3 * i + k]) > d)
+					d = abs(px[3 * i + k] - other[3 * i + k]);
+			n += d > 0;
+			most = d > most ? d : most;
+		}
+		printf("%ld %ld %d\n", n, (long)w * h, most);
+		free(px);
+		free(other);
+		return 0;
+	}
 	if (argc == 6) {
 		int want[3] = { atoi(argv[2]), atoi(argv[3]), atoi(argv[4]) };
 		int tol = atoi(argv[5]);
@@ -96,6 +124,7 @@ main(int argc, char *argv[])
 		free(px);
 		return 0;
 	}
-	fprintf(stderr, "usage: ppmstat FILE R G B TOL | ppmstat FILE at COL ROW\n");
+	fprintf(stderr, "usage: ppmstat FILE R G B TOL | ppmstat FILE at COL "
+	    "ROW | ppmstat FILE diff OTHER\n");
 	return 2;
 }

@@ -13,7 +13,8 @@
 # built once as a collection in the hidden "Tree parts" and instanced,
 # unless the .blend has an object or collection of its name.  With
 # frames, each frame's structure is shown at its own frame alone, by
-# keyframed visibility.  Running the script again replaces what it made
+# keyframed visibility, and the timeline ends at the last frame of the
+# growth.  Running the script again replaces what it made
 # and the artist left as it was, in the same collection: a placeholder
 # you edit (its mesh) or rename stays, as your own organ.
 
@@ -160,7 +161,7 @@ def remove_previous():
     if top is None:
         return None, []
     kept = []
-    meshes, groups = set(), set()
+    meshes, groups, actions = set(), set(), set()
     collections = list(walk(top))
     for collection in collections:
         for ob in list(collection.objects):
@@ -177,6 +178,11 @@ def remove_previous():
             for mod in ob.modifiers:
                 if mod.type == "NODES" and mod.node_group is not None:
                     groups.add(mod.node_group)
+            # The frames' visibility keys (an Action, which outlives
+            # its object, orphaned).
+            anim = ob.animation_data
+            if anim is not None and ours(anim.action):
+                actions.add(anim.action)
             bpy.data.objects.remove(ob)
     for collection in reversed(collections):
         # Ours, unless it holds what the artist keeps (a placeholder
@@ -190,6 +196,9 @@ def remove_previous():
     for group in groups:
         if group.users == 0 and ours(group):
             bpy.data.node_groups.remove(group)
+    for action in actions:
+        if action.users == 0:
+            bpy.data.actions.remove(action)
     return top, kept
 
 
@@ -294,6 +303,8 @@ def show_only_at(objects, frame):
             ob.hide_viewport = ob.hide_render = hidden
             ob.keyframe_insert("hide_viewport", frame=when)
             ob.keyframe_insert("hide_render", frame=when)
+        # Marked, so that a re-run removes it with its object.
+        ob.animation_data.action[TAG] = NAME
 
 
 class Builder:
@@ -383,6 +394,10 @@ def main():
     builder = Builder(top)
     for structure in STRUCTURES:
         builder.structure(*structure)
+    if FRAMES > 1:
+        # The timeline plays the growth, as the add-on's import sets it:
+        # past its end only the last frame would show, held.
+        bpy.context.scene.frame_end = FIRST_FRAME + FRAMES - 1
     print("phyllo-export: built collection %r: %d organs over %d "
           "frame(s) in %.2f s%s" % (
               NAME, builder.organs, FRAMES, time.time() - start,
