@@ -4,7 +4,7 @@
 // the seed model of sunflower.pov.  The photograph's frame cut the
 // head's right edge off: so is the render.
 //   phyllo-export --pov -o measured-head.inc scenes/measured-head.cfg
-//   povray +A +W640 +H480 +Iscenes/measured-head.pov
+//   povray +A +W640 +H480 +Iscenes/measured-head.pov +Omeasured-head.png
 // (make renders does both for every scene.)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

@@ -31,15 +31,16 @@ function collect(dirs, exts) {
       const p = `${d}/${e.name}`;
       if (e.isDirectory())
         walk(p);
-      else if (exts.test(e.name))
+      else if (exts.test(p))
         files[p] = fs.readFileSync(p);
     }
   };
   dirs.forEach(walk);
   return files;
 }
+// Scenes, parts, meshes, templates, and the measured model's points.
 const FILES = collect(['scenes', 'tests/regress', 'tests/gltf'],
-  /\.(cfg|obj|mtl|tmpl)$/);
+  /\.(cfg|obj|mtl|tmpl)$|\/points\/[^/]+$/);
 FILES['tests/placeholders.tmpl'] = fs.readFileSync('tests/placeholders.tmpl');
 
 function native(args, input) {
