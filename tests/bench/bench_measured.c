@@ -28,7 +28,6 @@
 #include "scene_text.h"
 #include "synth.h"
 
-enum { D_JITTER = 1, D_MISSING = 2, D_CENTRE = 4, D_CUT = 8, D_SQUASH = 16 };
 
 static const struct {
 	const char	*name;
@@ -58,43 +57,16 @@ static const struct {
 	    "= 1.5; }; radius = 0.05; };" },
 };
 
-/* As test_measured.c's trial(): one head, held to its organs' order. */
+/* One trial (synth.h), saying why it failed where BENCH_WHY is set. */
 static int
 trial(const struct result *r, const struct para_zone *z0, size_t nz0,
     int what, uint64_t seed, double *dev)
 {
-	struct synth S;
-	struct unordered *U;
-	struct para_zone z[64];
-	int (*ref)[2] = calloc(r->count, sizeof(*ref));
-	uint64_t rng = seed * 0x9e3779b97f4a7c15ULL + 1;
-	double guess[2], a = 2 * M_PI * synth_uniform(&rng);
 	char why[200];
-	size_t nz;
-	int ok;
+	int ok = synth_trial(r, z0, nz0, what, seed, why, sizeof(why), dev);
 
-	synth_init(&S, r);
-	if (what & D_JITTER)
-		synth_jitter(&S, 0.15, &rng);
-	if (what & D_MISSING)
-		synth_drop(&S, 0.05, &rng);
-	if (what & D_CUT)
-		synth_cut(&S, S.has_z ? 0.5 : 0.7, a);
-	nz = synth_order(&S, r, ref, z, 64);
-	synth_view(&S, (what & D_SQUASH) && !S.has_z ? 0.9 : 1, a + 1, &rng);
-	guess[0] = 3.25 * S.radius + 0.1 * S.radius * cos(a + 2);
-	guess[1] = -1.5 * S.radius + 0.1 * S.radius * sin(a + 2);
-	U = synth_measure(&S, (what & D_CENTRE) ? guess : NULL, !r->rim_last);
-	(void)nz;
-	ok = synth_agrees(U, S.id, (const int (*)[2])ref, z0, nz0,
-	    r->rim_last, r->divergence, 0.9, 2.0 / 3, 0, why, sizeof(why));
-	*dev = isnan(U->divergence) ? NAN : remainder(U->divergence -
-	    r->divergence, 360) / U->divergence_err;
 	if (!ok && getenv("BENCH_WHY") != NULL)
 		fprintf(stderr, "seed %llu: %s\n", (unsigned long long)seed, why);
-	free(U);
-	free(ref);
-	synth_free(&S);
 	return ok;
 }
 

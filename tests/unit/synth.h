@@ -345,4 +345,52 @@ synth_agrees(const struct unordered *U, const size_t *id, const int (*ref)[2],
 	return ok;
 }
 
+/* What a trial does to a head before measuring it: flags. */
+enum { D_JITTER = 1, D_MISSING = 2, D_CENTRE = 4, D_CUT = 8, D_SQUASH = 16 };
+
+/*
+ * One trial; 1 if it agrees with parastichy.c's reading of the same
+ * organs, jittered, missed and cut alike, in their order (the pair each
+ * organ shows is its own contacts', not the model's before they moved;
+ * the view's squash is not in that reading: the measurement undoes it),
+ * and at the rim says the pair of the head as the model made it (z0).
+ * why says what failed; *dev is how far the divergence measured is from
+ * the model's, in its errors (NAN: none measured).
+ */
+static inline int
+synth_trial(const struct result *r, const struct para_zone *z0, size_t nz0,
+    int what, uint64_t seed, char *why, size_t sz, double *dev)
+{
+	struct synth S;
+	struct unordered *U;
+	struct para_zone z[64];
+	int (*ref)[2] = calloc(r->count, sizeof(*ref));
+	uint64_t rng = seed * 0x9e3779b97f4a7c15ULL + 1;
+	double guess[2], a = 2 * M_PI * synth_uniform(&rng);
+	int ok;
+
+	synth_init(&S, r);
+	if (what & D_JITTER)
+		synth_jitter(&S, 0.15, &rng);
+	if (what & D_MISSING)
+		synth_drop(&S, 0.05, &rng);
+	/* The photograph's frame: a cap of the head a sixth deep. */
+	if (what & D_CUT)
+		synth_cut(&S, S.has_z ? 0.5 : 0.7, a);
+	synth_order(&S, r, ref, z, 64);
+	synth_view(&S, (what & D_SQUASH) && !S.has_z ? 0.9 : 1, a + 1, &rng);
+	guess[0] = 3.25 * S.radius + 0.1 * S.radius * cos(a + 2);
+	guess[1] = -1.5 * S.radius + 0.1 * S.radius * sin(a + 2);
+	U = synth_measure(&S, (what & D_CENTRE) ? guess : NULL,
+	    !r->rim_last);
+	ok = synth_agrees(U, S.id, (const int (*)[2])ref, z0, nz0,
+	    r->rim_last, r->divergence, 0.9, 2.0 / 3, 0, why, sz);
+	*dev = isnan(U->divergence) ? NAN : remainder(U->divergence -
+	    r->divergence, 360) / U->divergence_err;
+	free(U);
+	free(ref);
+	synth_free(&S);
+	return ok;
+}
+
 #endif
