@@ -184,7 +184,8 @@ info_write(struct sink *s, const struct result *r, unsigned opts)
 	sink_puts(s, r->name);
 	sink_putc(s, '\n');
 	line(s, "count", 1, &count);
-	line(s, "divergence", 1, &r->divergence);
+	if (unordered_info_divergence(s, r) == 0)
+		line(s, "divergence", 1, &r->divergence);
 	for (size_t i = 0; i < r->count; i++)
 		for (int j = 0; j < 3; j++) {
 			box[j] = fmin(box[j], r->organs[i].pos[j]);

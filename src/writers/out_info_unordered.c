@@ -28,6 +28,15 @@ seen(struct sink *s, const struct uzone *z)
 	}
 }
 
+int
+unordered_info_divergence(struct sink *s, const struct result *r)
+{
+	if (r->unordered == NULL || !isnan(r->unordered->divergence))
+		return 0;
+	sink_puts(s, "divergence: none\n");
+	return 1;
+}
+
 void
 unordered_info(struct sink *s, const struct result *r)
 {

@@ -633,7 +633,11 @@ svg_write(struct sink *s, const struct result *r, unsigned opts)
 		const char *edge = P->unrolled ? "base" : "rim";
 		char seen[80];
 
-		if (b->m == 0) {
+		if (b->m == 0 && b->nseen == 0)
+			/* Measured without an order: no lattice read there. */
+			snprintf(line, sizeof(line), "no pair clear at the %s",
+			    edge);
+		else if (b->m == 0) {
 			para_seen_text(b, seen, sizeof(seen));
 			snprintf(line, sizeof(line), "no one pair at the %s: "
 			    "a %s", edge, seen);

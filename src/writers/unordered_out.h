@@ -11,6 +11,13 @@
 #include "writers/sink.h"
 #include "result/organ.h"
 
+/*
+ * "divergence: none" where the organs were measured and no lattice
+ * gave one (1), else nothing (0): the result's divergence, 0 there, is
+ * for templates.
+ */
+int	unordered_info_divergence(struct sink *, const struct result *);
+
 /* The parastichies: and parastichies-along: lines. */
 void	unordered_info(struct sink *, const struct result *);
 
