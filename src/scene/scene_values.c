@@ -264,8 +264,8 @@ set_vec3(struct load *L, const config_setting_t *s, const struct row *r,
 	if ((config_setting_type(s) != CONFIG_TYPE_ARRAY &&
 	    config_setting_type(s) != CONFIG_TYPE_LIST) ||
 	    config_setting_length(s) != 3) {
-		load_err_at(L, s, "%s must be an array of 3 numbers: "
-		    "[1.0, 1.0, 0.5]", path);
+		load_err_at(L, s, "%s must be an array of 3 numbers, "
+		    "[x, y, z]", path);
 		return -1;
 	}
 	for (int i = 0; i < 3; i++)
