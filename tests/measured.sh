@@ -170,6 +170,52 @@ pairs() { grep "^parastichies" "$1" | sed 's/ from [^;]*//g'; }
 assert "the same pairs along" '[ "$(pairs $OUT/stdout)" = "$(pairs $OUT/plain.info)" ]'
 end
 
+# --- What a user's points may hide, said. ---
+# A stray click far off: warned of at its line, the run goes on.
+(cat "$OUT/plain.csv"; echo "9,9") >"$OUT/stray.csv"
+measure "$OUT/stray-m.cfg" stray.csv
+try "a stray click: a warning at its line" px --info "$OUT/stray-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the line ($(wc -l <"$OUT/stray.csv")) and what it is" 'grep -q "stray.csv:$(wc -l <"$OUT/stray.csv"): warning: this point is [0-9.]* spacings from any other: a stray click?" $OUT/stderr'
+end
+try "the same head without it: no warning" px --info "$OUT/plain-m.cfg"
+assert "exit 0, nothing on stderr" '[ $rc -eq 0 ] && [ ! -s $OUT/stderr ]'
+end
+# A head the picture's frame cut past its centre: the centre found, and
+# the divergence, may be far off; cut at 0.7 of the radius, the trials'
+# depth, it is read as it is.
+awk -F, 'NR == 1 || $1 <= 0.15' "$OUT/plain.csv" >"$OUT/cut15.csv"
+awk -F, 'NR == 1 || $1 <= 0.7' "$OUT/plain.csv" >"$OUT/cut70.csv"
+measure "$OUT/cut15-m.cfg" cut15.csv
+measure "$OUT/cut70-m.cfg" cut70.csv
+try "a head cut past its centre: a warning that the centre may be off" px --info "$OUT/cut15-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the share it reaches, and what to do" 'grep -q "cut15.csv: warning: the points reach 0.1[0-9]* of the head.s radius on one side .*give measured.centre" $OUT/stderr'
+end
+try "a head cut at 0.7 of its radius: no warning, the rim's pair" px --info "$OUT/cut70-m.cfg"
+assert "nothing on stderr" '[ ! -s $OUT/stderr ]'
+assert "55 89" 'grep -q "^parastichies: 55 89$" $OUT/stdout'
+end
+# A centre given outside the head: said, and nothing measured.
+measure "$OUT/outside-m.cfg" plain.csv 'centre = [5.0, 5.0, 0.0];'
+try "a centre given outside the head: a warning; divergence none, not 0" px --info "$OUT/outside-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+assert "the warning" 'grep -q "warning: about measured.centre the points reach 0 of" $OUT/stderr'
+assert "divergence: none" 'grep -q "^divergence: none$" $OUT/stdout'
+end
+px --svg "$OUT/outside-m.cfg" >"$OUT/outside.svg" 2>/dev/null
+try "its SVG says no pair is clear, not a transition" true
+assert "the title" 'grep -q ">no pair clear at the rim<" $OUT/outside.svg && ! grep -q "transition" $OUT/outside.svg'
+end
+# A European spreadsheet: ';' between fields, a decimal comma.
+sed 's/,/;/; s/\./,/g' "$OUT/plain.csv" >"$OUT/comma.csv"
+measure "$OUT/comma-m.cfg" comma.csv 'outer = 1;'
+try "';' between fields and decimal commas: the same organs" px --csv "$OUT/comma-m.cfg"
+assert "exit 0" '[ $rc -eq 0 ]'
+px --csv "$OUT/plain-m.cfg" >"$OUT/plain.out"
+assert "as the plain file's" 'cmp -s "$OUT/plain.out" "$OUT/stdout"'
+end
+
 # --- The points file is an input. ---
 cp "$OUT/plain.csv" "$OUT/keep.csv"
 measure "$OUT/keep-m.cfg" keep.csv

@@ -138,6 +138,40 @@ row_order(const struct points *P)
 }
 
 /*
+ * Points further from their nearest than STRAY spacings of that one's
+ * (a lattice's organs are one spacing apart, at a rim or a cut too):
+ * a click beside the head, a typo in a number.  Warned of, the
+ * furthest by its line: it is measured as an organ, and sets the head's
+ * extent (outer) and its rim.
+ */
+#define STRAY	4
+
+static void
+stray(const struct points *P, const char *path, const size_t *near,
+    const double *d0, const double *radius)
+{
+	size_t worst = 0, many = 0;
+	double most = 0;
+
+	for (size_t i = 0; i < P->count; i++) {
+		double at = 2 * radius[near[i]];	/* near[i]'s spacing */
+
+		if (near[i] == i || at <= 0 || d0[i] <= STRAY * at)
+			continue;
+		many++;
+		if (d0[i] / at > most) {
+			most = d0[i] / at;
+			worst = i;
+		}
+	}
+	if (many > 0)
+		diag(ST_OK, path, P->line[worst], 0, "this point is %.3g "
+		    "spacings from any other%s: a stray click? it is measured "
+		    "as an organ, and sets the head's extent and rim", most,
+		    many > 1 ? " (and more points are far out)" : "");
+}
+
+/*
  * Each point's radius, half the median distance to its four nearest
  * (a lattice's first shell, but for the third direction's pair; a
  * click's jitter averages out), and the closest pair.  A point within
@@ -152,6 +186,8 @@ spacing(const struct points *P, const double (*p)[3], const char *path,
     double *radius, size_t closest[2], double *dmin)
 {
 	struct kd T;
+	size_t *near = xcalloc(P->count, sizeof(*near));
+	double *d0 = xcalloc(P->count, sizeof(*d0));
 	int warned = 0;
 
 	*dmin = HUGE_VAL;
@@ -165,6 +201,8 @@ spacing(const struct points *P, const double (*p)[3], const char *path,
 		for (int k = 0; k < nb.n; k++)
 			d[n++] = sqrt(nb.d2[k]) / nb.inv;
 		radius[i] = n >= 4 ? (d[1] + d[2]) / 4 : n > 0 ? d[0] / 2 : 0;
+		near[i] = n > 0 ? nb.j[0] : i;
+		d0[i] = n > 0 ? d[0] : 0;
 		if (n > 0 && d[0] < *dmin) {
 			*dmin = d[0];
 			closest[0] = i;
@@ -181,6 +219,60 @@ spacing(const struct points *P, const double (*p)[3], const char *path,
 		}
 	}
 	kd_free(&T);
+	stray(P, path, near, d0, radius);
+	free(near);
+	free(d0);
+}
+
+/*
+ * How far a head reaches from the centre found on its shortest side,
+ * of the way it reaches on its median side, in SECTORS directions: a head
+ * the picture's frame cut near its centre leaves the centre's search
+ * too little of a ring to read (the trials hold at 0.7 of the radius;
+ * cuts nearer than a fifth gave divergences far off, with small
+ * errors).  Under REACH_LOW, a warning: the centre may be off; or, given,
+ * not the head's.
+ */
+#define SECTORS		24
+#define REACH_LOW	0.5
+
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return x < y ? -1 : x > y;
+}
+
+static void
+reach(const struct axis_point *ap, size_t n, const char *path, int given)
+{
+	double far[SECTORS] = { 0 }, sorted[SECTORS], lo, hi;
+
+	for (size_t i = 0; i < n; i++) {
+		double a = atan2(ap[i].p[1], ap[i].p[0]) / (2 * M_PI) + 0.5;
+		int k = (int)(a * SECTORS) % SECTORS;
+
+		far[k] = fmax(far[k], ap[i].rho);
+	}
+	/* Of the median side's: a stray click makes no side long. */
+	memcpy(sorted, far, sizeof(far));
+	qsort(sorted, SECTORS, sizeof(*sorted), cmp_double);
+	lo = sorted[0];
+	hi = sorted[SECTORS / 2];
+	/* hi 0: no points at all on half the sides, a centre outside. */
+	if (n == 0 || (hi > 0 && lo >= REACH_LOW * hi))
+		return;
+	if (given)
+		diag(ST_OK, path, 0, 0, "about measured.centre the points "
+		    "reach %.2g of the head's radius on one side: a head cut "
+		    "there, or a centre not the head's?", hi > 0 ? lo / hi : 0);
+	else
+		diag(ST_OK, path, 0, 0, "the points reach %.2g of the head's "
+		    "radius on one side (a head the picture's frame cut?): "
+		    "the centre found may be off, and with it the "
+		    "divergence; give measured.centre if you know it",
+		    hi > 0 ? lo / hi : 0);
 }
 
 /* The measurement's facts for --info (the parastichies: out_info). */
@@ -360,6 +452,8 @@ measured_run(const struct model_ctx *ctx, struct result *res)
 	}
 	ap = xcalloc(P.count, sizeof(*ap));
 	axis_points(&A, (const double (*)[3])p, P.count, ap);
+	if (!A.surface)
+		reach(ap, P.count, path, M->given[MS_CENTRE]);
 	U = unordered_measure(&A, ap, (const double (*)[3])p, P.count,
 	    older_out(&P, row, ap));
 	for (size_t i = 0; i < P.count; i++)

@@ -224,9 +224,21 @@ number(const struct reader *R, int k, const char *text, size_t len,
 	shown(q, sizeof(q), text, len);
 	if (len >= FIELD_MAX)
 		return fail(R, "%s '%s' is not a number", col_names[k], q);
+	/*
+	 * A spreadsheet that separates by ';' or tabs writes a decimal
+	 * comma where its locale does (1,5): one comma, no point.  Not
+	 * hexadecimal (0x10), which strtod() reads: a typo, likely.
+	 */
+	{
+		char *c = strchr(text, ',');
+
+		if (R->sep != ',' && c != NULL && strchr(c + 1, ',') == NULL &&
+		    strchr(text, '.') == NULL)
+			*c = '.';
+	}
 	errno = 0;
 	*v = strtod(text, &e);
-	if (e == text || *e != '\0')
+	if (e == text || *e != '\0' || strpbrk(text, "xX") != NULL)
 		return fail(R, "%s '%s' is not a number", col_names[k], q);
 	if (isnan(*v))
 		return fail(R, "%s is NaN: every value must be a finite "
@@ -305,11 +317,18 @@ line(struct reader *R, const char *s, size_t len)
 	const char *end = s + len, *p;
 
 	/* Text has no control characters but tabs and a CRLF's CR. */
-	for (size_t i = 0; i < len; i++)
+	for (size_t i = 0; i < len; i++) {
+		if (s[i] == '\r' && i + 1 < len)
+			return fail(R, "a line ends in a carriage return alone "
+			    "(an old Mac file?): end lines with a newline");
 		if (((unsigned char)s[i] < 0x20 && s[i] != '\t' &&
 		    s[i] != '\r') || s[i] == 0x7f)
 			return fail(R, "a control character (byte %d): this is "
-			    "not a text file of points", (unsigned char)s[i]);
+			    "not a text file of points%s", (unsigned char)s[i],
+			    s[i] == 0 && R->line == 1 && i > 0 && s[i - 1] >=
+			    0x20 && s[i - 1] < 0x7f ? " (UTF-16? save it as "
+			    "UTF-8)" : "");
+	}
 	if (R->line == 1 && len >= 3 && memcmp(s, "\xef\xbb\xbf", 3) == 0)
 		s += 3;		/* a spreadsheet's byte order mark */
 	for (p = s; p < end && blank(*p); p++)
