@@ -74,8 +74,10 @@ leaps(const struct result *r, double (*page)[2], size_t a, size_t b)
 
 /*
  * Family f: next[j] is the organ whose earlier contact f organs away j
- * is (the nearest, if more than one); chains run from an organ with no
- * such contact of its own along next, in one path.
+ * is (the nearest, if more than one); chains run along next, in one
+ * path, from an organ with no such contact of its own, or from one the
+ * step into leaps the unrolled seam (the spiral goes on across the
+ * page, and would else be drawn no further).
  */
 static int
 family(struct sink *s, const struct result *r, double (*page)[2], int f,
@@ -83,6 +85,7 @@ family(struct sink *s, const struct result *r, double (*page)[2], int f,
 {
 	const struct unordered *U = r->unordered;
 	size_t *chain = xcalloc(r->count + 1, sizeof(*chain));
+	long *from = xcalloc(r->count + 1, sizeof(*from));
 	int open = 0;
 
 	for (size_t i = 0; i < r->count; i++) {
@@ -101,10 +104,16 @@ family(struct sink *s, const struct result *r, double (*page)[2], int f,
 			    page[j][0], page[next[j]][1] - page[j][1]))
 				next[j] = (long)i;
 		}
+	for (size_t i = 0; i < r->count; i++)
+		from[i] = -1;
+	for (size_t j = 0; j < r->count; j++)
+		if (next[j] >= 0)
+			from[next[j]] = (long)j;
 	for (size_t i = 0; i < r->count; i++) {
 		size_t n = 0;
 
-		if (has[i] || next[i] < 0)
+		if (next[i] < 0 || (has[i] && (from[i] < 0 ||
+		    !leaps(r, page, (size_t)from[i], i))))
 			continue;
 		chain[n++] = i;
 		while (n <= r->count && next[chain[n - 1]] >= 0 &&
@@ -125,6 +134,7 @@ family(struct sink *s, const struct result *r, double (*page)[2], int f,
 	}
 	if (open)
 		sink_puts(s, "\"/>\n");
+	free(from);
 	free(chain);
 	return open;
 }
