@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "analysis/lattice.h"
 
 #define NEAREST		6	/* steps a point gives the directions */

@@ -19,7 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "analysis/kdtree.h"
 #include "analysis/parastichy.h"
 #include "analysis/design.h"

@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "analysis/design.h"
 #include "analysis/lattice.h"
 #include "analysis/unordered.h"

@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "geometry/curve.h"
-#include "mem.h"
+#include "base/mem.h"
 
 #define PIECES_PER_CURVE	512	/* pieces along a smooth profile */
 #define PIECES_MAX		8192

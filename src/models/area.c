@@ -18,11 +18,11 @@
 #include <stdlib.h>
 
 #include "analysis/design.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/curve.h"
 #include "geometry/geometry.h"
 #include "geometry/receptacle.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/model.h"
 
 enum { AR_RECEPTACLE, AR_RADIUS, AR_PARASTICHIES, AR__N };

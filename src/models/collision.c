@@ -22,11 +22,11 @@
 #include <stdlib.h>
 
 #include "analysis/design.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/curve.h"
 #include "geometry/geometry.h"
 #include "geometry/receptacle.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/collision.h"
 #include "models/collision_cover.h"
 #include "models/collision_impl.h"

@@ -14,9 +14,9 @@
 #include <stdlib.h>
 
 #include "analysis/design.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/geometry.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/cylindrical_lattice.h"
 #include "models/model.h"
 

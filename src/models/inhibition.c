@@ -25,9 +25,9 @@
 #include <stdlib.h>
 
 #include "analysis/parastichy.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/geometry.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/inhibition.h"
 #include "models/inhibition_impl.h"
 #include "models/model.h"

@@ -20,12 +20,12 @@
 #include "analysis/kdtree.h"
 #include "analysis/unordered.h"
 #include "compat/compat.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/geometry.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/measured_csv.h"
 #include "models/model.h"
-#include "scene/compound.h"
+#include "base/path.h"
 
 enum { MS_POINTS, MS_YAXIS, MS_CENTRE, MS_OUTER, MS_OBLIQUE, MS__N };
 
@@ -95,7 +95,7 @@ open_points(const struct model_ctx *ctx, const struct measured *P,
 		    "%zu", P->points.n);
 		return -1;
 	}
-	*path = compound_resolve(ctx->file, P->points.v[0]);
+	*path = path_resolve(ctx->file, P->points.v[0]);
 	/* A FIFO would wait for a writer for ever. */
 	why = sys_stat(*path, &st) != 0 ? strerror(errno) :
 	    st.kind == SYS_DIR ? strerror(EISDIR) :
@@ -399,7 +399,7 @@ measured_inputs(const void *params, const char *scene,
 
 	if (!M->given[MS_POINTS] || M->points.n != 1)
 		return;
-	path = compound_resolve(scene, M->points.v[0]);
+	path = path_resolve(scene, M->points.v[0]);
 	add(path, "the points file");
 	free(path);
 }

@@ -4,8 +4,8 @@
 
 #include "compat/compat.h"
 #include "result/organ.h"
-#include "scene/expr.h"
-#include "scene/settings.h"
+#include "base/expr.h"
+#include "base/table.h"
 
 /*
  * What a model sees of the scene: the top-level settings it uses, its

@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 
 const struct xform xform_identity = {
 	{ { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, 1, { 0, 0, 0 }

@@ -4,8 +4,8 @@
 
 #include <stddef.h>
 
-#include "phyllo.h"
-#include "geometry/vec.h"
+#include "base/phyllo.h"
+#include "base/vec.h"
 
 /*
  * One placed organ in the world frame (right-handed, Z up).  The frame

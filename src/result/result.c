@@ -3,7 +3,7 @@
 #include <stdlib.h>
 
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "result/organ.h"
 
 void

@@ -26,7 +26,7 @@
 
 #include "result/flatten.h"
 #include "writers/json.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "meshes/mesh.h"
 #include "meshes/meshes.h"
 #include "writers/writer.h"

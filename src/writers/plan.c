@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "writers/plan.h"
 
 static int

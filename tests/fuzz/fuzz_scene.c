@@ -19,6 +19,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "pipeline/pipeline.h"
 #include "scene/compound.h"
 #include "result/flatten.h"
 #include "models/model.h"
