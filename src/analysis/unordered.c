@@ -24,7 +24,7 @@
 #include <string.h>
 
 #include "base/mem.h"
-#include "analysis/design.h"
+#include "analysis/parastichy.h"
 #include "analysis/lattice.h"
 #include "analysis/unordered.h"
 

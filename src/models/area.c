@@ -256,8 +256,9 @@ area_run(const struct model_ctx *ctx, struct result *res)
 
 	if (!at)
 		return place_area(ctx, P, res, 0, 0);
-	r = para_design_receptacle(ctx, "area", at, P->given[AR_RADIUS],
-	    &P->receptacle, &P->parastichies, 1, trial_place, &T);
+	r = para_design_receptacle(ctx->file, "area", at,
+	    P->given[AR_RADIUS], &P->receptacle, &P->parastichies, 1,
+	    trial_place, &T);
 	/* --info's radius line is the one chosen. */
 	return r < 0 ? -1 : place_area(ctx, P, res, r, 0);
 }

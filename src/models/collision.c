@@ -567,8 +567,9 @@ collision_run(const struct model_ctx *ctx, struct result *res)
 
 	if (!at)
 		return collision_place(ctx, res, PLACE_EXACT);
-	r = para_design_receptacle(ctx, "collision", at, P->given[CO_RADIUS],
-	    &P->receptacle, &P->parastichies, 0, trial_place, (void *)ctx);
+	r = para_design_receptacle(ctx->file, "collision", at,
+	    P->given[CO_RADIUS], &P->receptacle, &P->parastichies, 0,
+	    trial_place, (void *)ctx);
 	if (r < 0 || place(ctx, res, PLACE_EXACT, r, 0) != 0)
 		return -1;
 	result_info(res, "radius", 1, r);

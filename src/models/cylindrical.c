@@ -13,7 +13,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "analysis/design.h"
+#include "analysis/parastichy.h"
 #include "base/diag.h"
 #include "geometry/geometry.h"
 #include "base/mem.h"

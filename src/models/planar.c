@@ -160,7 +160,7 @@ planar_run(const struct model_ctx *ctx, struct result *res)
 		return -1;
 	if (!p->given[PL_PARASTICHIES])
 		return place(ctx, p, (size_t)ctx->count, res);
-	if (para_want_check(ctx, p->given[PL_PARASTICHIES],
+	if (para_want_check(ctx->file, p->given[PL_PARASTICHIES],
 	    "planar.parastichies", want) != 0)
 		return -1;
 	/* Counts up to where the rim shows about 4 n around it. */
