@@ -76,7 +76,8 @@ struct result {
 	const struct result **sub;
 	/*
 	 * A view of a compound with its parts opened (flatten.h): organs
-	 * is NULL and the leaves are walked from here; owned.
+	 * is NULL and the leaves are walked from here; owned, freed by
+	 * flatten_free() (result_free() does not know it).
 	 */
 	struct flat	*flat;
 	/*

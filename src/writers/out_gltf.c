@@ -169,7 +169,7 @@ gltf_plan(struct gltf *G, const struct result *r)
 static void
 gltf_free(struct gltf *G)
 {
-	result_free(&G->view);
+	flatten_free(&G->view);
 	mesh_free(&G->placeholder);
 	free(G->node);
 	free(G->geom);

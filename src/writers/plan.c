@@ -84,7 +84,7 @@ void
 plan_free(struct plan *P)
 {
 	for (size_t i = 0; i < P->nviews; i++)
-		result_free(&P->views[i]);
+		flatten_free(&P->views[i]);
 	free(P->views);
 	free(P->all);
 	*P = (struct plan){ NULL, 0, NULL, 0 };
