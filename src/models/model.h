@@ -10,7 +10,7 @@
 /*
  * What a model sees of the scene: the top-level settings it uses, its
  * own group's settings, and where to send messages and progress.  The
- * scene layer builds it (scene_model_ctx()); a model never sees the
+ * pipeline builds it (scene_model_ctx(), pipeline/); a model never sees the
  * scene itself.
  */
 struct model_ctx {
