@@ -160,16 +160,16 @@ para_want_check(const char *file, int line, const char *path,
 		return -1;
 	}
 	if ((a = para_gcd(want->v[0], want->v[1])) != 1) {
-		design_error(file, line, "%s [%d, %d] have the common factor %d: "
-		    "a single spiral shows coprime numbers", path, want->v[0],
-		    want->v[1], a);
+		design_error(file, line, "%s [%d, %d] have the common factor "
+		    "%d: a single spiral shows coprime numbers", path,
+		    want->v[0], want->v[1], a);
 		return -1;
 	}
 	return 0;
 }
 
 struct design {
-	para_place_fn	*place;
+	para_trial_fn	*trial;
 	void		*arg;
 	long long	 cap;
 };
@@ -183,7 +183,7 @@ design_pair(void *ctx, double r, int pair[2])
 	struct para_zone z[64];
 	size_t nz;
 
-	if (D->place(D->arg, r, D->cap, &res) != 0)
+	if (D->trial(D->arg, r, D->cap, &res) != 0)
 		return -1;
 	nz = para_zones(&res, NULL, z, 64);
 	pair[0] = nz ? z[0].m : 0;
@@ -200,10 +200,10 @@ design_pair(void *ctx, double r, int pair[2])
 static double
 design_radius(const char *file, int line, const char *path,
     const struct int_list *want, double rim, double rhi,
-    para_place_fn *place, void *arg)
+    para_trial_fn *trial, void *arg)
 {
 	/* Enough organs for the base to show its pair, and not many more. */
-	struct design D = { place, arg, 12LL * (want->v[0] + want->v[1]) };
+	struct design D = { trial, arg, 12LL * (want->v[0] + want->v[1]) };
 	char reach[512];
 	double r, est;
 
@@ -227,9 +227,9 @@ design_radius(const char *file, int line, const char *path,
 		r = para_search(want->v, rhi / 200, rhi, 0, design_pair, &D,
 		    reach, sizeof(reach));
 	if (r == 0) {
-		design_error(file, line, "no constant radius shows parastichies "
-		    "%d/%d at the base of this receptacle; the radii tried "
-		    "show %s", want->v[0], want->v[1], reach);
+		design_error(file, line, "no constant radius shows "
+		    "parastichies %d/%d at the base of this receptacle; the "
+		    "radii tried show %s", want->v[0], want->v[1], reach);
 		return -1;
 	}
 	return r;
@@ -238,7 +238,7 @@ design_radius(const char *file, int line, const char *path,
 double
 para_design_receptacle(const char *file, const char *group,
     int line, int radius_line, const struct receptacle *rc,
-    const struct int_list *want, int by_area, para_place_fn *place,
+    const struct int_list *want, int by_area, para_trial_fn *trial,
     void *arg)
 {
 	char path[64];
@@ -263,5 +263,5 @@ para_design_receptacle(const char *file, const char *group,
 	}
 	free(pts);
 	snprintf(path, sizeof(path), "%s.parastichies", group);
-	return design_radius(file, line, path, want, rim, rhi, place, arg);
+	return design_radius(file, line, path, want, rim, rhi, trial, arg);
 }

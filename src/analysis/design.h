@@ -26,8 +26,8 @@ double	para_search(const int want[2], double lo, double hi, int grows,
 struct int_list;
 struct receptacle;
 
-/* Make the structure with a constant radius r, at most cap organs. */
-typedef int para_place_fn(void *arg, double r, long long cap,
+/* A trial structure: made with a constant radius r, at most cap organs. */
+typedef int para_trial_fn(void *arg, double r, long long cap,
     struct result *);
 
 /*
@@ -37,12 +37,12 @@ typedef int para_place_fn(void *arg, double r, long long cap,
  * base of rc; radius_line: where the group gave its radius too (0: it
  * did not, as it must not).  Searched up to a radius whose cell fits
  * four times round the base and, with by_area, four times on the whole
- * receptacle.  place makes a trial structure with arg.  The
- * radius, or -1 after a diagnostic.
+ * receptacle.  trial makes a trial structure with arg.  The radius, or
+ * -1 after a diagnostic.
  */
 double	para_design_receptacle(const char *file, const char *group,
 	    int line, int radius_line, const struct receptacle *rc,
-	    const struct int_list *want, int by_area, para_place_fn *place,
+	    const struct int_list *want, int by_area, para_trial_fn *trial,
 	    void *arg);
 
 /*

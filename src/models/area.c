@@ -247,7 +247,7 @@ trial_place(void *arg, double r, long long cap, struct result *res)
 }
 
 static int
-area_run(const struct model_ctx *ctx, struct result *res)
+area_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct area *P = ctx->params;
 	struct trial T = { ctx, P };
@@ -269,5 +269,5 @@ const struct model area_model = {
 	    "(Fibonacci sphere)",
 	.settings = &area_table,
 	.size = sizeof(struct area),
-	.run = area_run,
+	.make = area_make,
 };

@@ -559,7 +559,7 @@ trial_place(void *arg, double r, long long cap, struct result *res)
 }
 
 static int
-collision_run(const struct model_ctx *ctx, struct result *res)
+collision_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct collision *P = ctx->params;
 	int at = P->given[CO_PARASTICHIES];
@@ -582,5 +582,5 @@ const struct model collision_model = {
 	    "receptacle",
 	.settings = &collision_table,
 	.size = sizeof(struct collision),
-	.run = collision_run,
+	.make = collision_make,
 };

@@ -313,7 +313,7 @@ place(struct result *res, const double (*p)[3], const struct axis *A,
 }
 
 static int
-measured_run(const struct model_ctx *ctx, struct result *res)
+measured_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct measured *M = ctx->params;
 	struct points P;
@@ -410,7 +410,7 @@ const struct model measured_model = {
 	    "an order",
 	.settings = &measured_table,
 	.size = sizeof(struct measured),
-	.run = measured_run,
+	.make = measured_make,
 	.count_else = "points",
 	.emerges = 1,
 	.counts_itself = 1,

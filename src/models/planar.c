@@ -148,7 +148,7 @@ trial_pair(void *ctx, double x, int pair[2])
 }
 
 static int
-planar_run(const struct model_ctx *ctx, struct result *res)
+planar_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct planar *p = ctx->params;
 	const struct int_list *want = &p->parastichies;
@@ -184,7 +184,7 @@ const struct model planar_model = {
 	    "dome",
 	.settings = &planar_table,
 	.size = sizeof(struct planar),
-	.run = planar_run,
+	.make = planar_make,
 	.needs_count = 1,
 	.count_else = "parastichies",
 };
