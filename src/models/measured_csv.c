@@ -44,9 +44,7 @@ struct reader {
 
 static int
 fail(const struct reader *R, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    PRINTFLIKE(2, 3)
     ;
 
 static int
