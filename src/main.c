@@ -13,8 +13,8 @@
 #include <unistd.h>
 
 #include "compat/compat.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "models/model.h"
 #include "writers/output.h"
 #include "progress.h"

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "diag.h"
+#include "base/diag.h"
 #include "progress.h"
 #include "run.h"
 

@@ -5,7 +5,7 @@
 #ifndef PROGRESS_H
 #define PROGRESS_H
 
-#include "writers/sink.h"
+#include "base/sink.h"
 
 /* The run starts now: nothing shows before half a second of it. */
 void	progress_start(void);

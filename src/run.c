@@ -27,11 +27,13 @@
 #include <string.h>
 
 #include "scene/compound.h"
-#include "diag.h"
+#include "base/diag.h"
+#include "base/inputs.h"
 #include "meshes/meshes.h"
 #include "models/model.h"
 #include "writers/output.h"
 #include "scene/override.h"
+#include "pipeline/pipeline.h"
 #include "writers/plan.h"
 #include "run.h"
 
@@ -204,22 +206,22 @@ inputs(const struct job *j, const struct compound *c)
 	char what[NAME_LEN + 48];
 
 	if (strcmp(j->scene, "-") != 0)
-		output_input(j->scene, "the scene file");
+		input_add(j->scene, "the scene file");
 	if (j->template_path != NULL)
-		output_input(j->template_path, "the template in use");
+		input_add(j->template_path, "the template in use");
 	tmpl_shipped_inputs();
 	for (size_t i = 0; i < c->n; i++) {
 		if (c->parts[i]->object[0] == '\0')
 			continue;
 		snprintf(what, sizeof(what), "the scene of organ object \"%s\"",
 		    c->parts[i]->object);
-		output_input(c->parts[i]->file, what);
+		input_add(c->parts[i]->file, what);
 	}
 	/* A model's own inputs (the measured model's points file). */
 	for (size_t i = 0; i < c->n; i++)
 		if (c->parts[i]->sc.model->inputs != NULL)
 			c->parts[i]->sc.model->inputs(c->parts[i]->sc.params,
-			    c->parts[i]->file, output_input);
+			    c->parts[i]->file, input_add);
 	meshes_inputs(c);
 }
 

@@ -5,7 +5,7 @@
 #ifndef RUN_H
 #define RUN_H
 
-#include "writers/sink.h"
+#include "base/sink.h"
 #include "writers/template.h"
 #include "writers/writer.h"
 

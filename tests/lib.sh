@@ -78,7 +78,7 @@ err_args() {
 }
 
 # use_blender B: bl then runs Blender B, a command, or a Debian root made
-# by tests/tools/blender-root.sh (through tests/tools/blender-in-root.sh).
+# by tests/tools/blender-root.sh (through tests/tools/in-root.sh).
 use_blender() {
 	if [ -d "$1" ]; then
 		BL_ROOT=$1
@@ -88,7 +88,7 @@ use_blender() {
 }
 bl() {
 	if [ -n "$BL_ROOT" ]; then
-		sh tests/tools/blender-in-root.sh "$BL_ROOT" "$@"
+		sh tests/tools/in-root.sh "$BL_ROOT" blender "$@"
 	else
 		"$BL_CMD" "$@"
 	fi

@@ -4,25 +4,30 @@
  * structures (parastichy.c) over a range searched in log x.
  */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "analysis/design.h"
 #include "analysis/parastichy.h"
+#include "compat/compat.h"
 #include "geometry/curve.h"
 #include "geometry/receptacle.h"
-#include "models/model.h"
+#include "base/table.h"
 
-int
-para_gcd(int a, int b)
+/*
+ * A problem with the pair or radius asked for, at line of the scene
+ * file (0: at its start): reported as a model's are (model_error()),
+ * which is all the models need to give design of their context.
+ */
+static void PRINTFLIKE(3, 4)
+design_error(const char *file, int line, const char *fmt, ...)
 {
-	while (b != 0) {
-		int t = a % b;
+	va_list ap;
 
-		a = b;
-		b = t;
-	}
-	return a;
+	va_start(ap, fmt);
+	settings_verror(file, line, fmt, ap);
+	va_end(ap);
 }
 
 /* -1, 0, 1: pair a below, at, above b (by the larger number, then the smaller). */
@@ -144,27 +149,27 @@ para_search(const int want[2], double lo, double hi, int grows,
 }
 
 int
-para_want_check(const struct model_ctx *ctx, int line, const char *path,
+para_want_check(const char *file, int line, const char *path,
     const struct int_list *want)
 {
 	int a;
 
 	if (want->n != 2 || want->v[0] >= want->v[1]) {
-		model_error(ctx, line, "%s must be a pair [m, n] with m < n",
+		design_error(file, line, "%s must be a pair [m, n] with m < n",
 		    path);
 		return -1;
 	}
 	if ((a = para_gcd(want->v[0], want->v[1])) != 1) {
-		model_error(ctx, line, "%s [%d, %d] have the common factor %d: "
-		    "a single spiral shows coprime numbers", path, want->v[0],
-		    want->v[1], a);
+		design_error(file, line, "%s [%d, %d] have the common factor "
+		    "%d: a single spiral shows coprime numbers", path,
+		    want->v[0], want->v[1], a);
 		return -1;
 	}
 	return 0;
 }
 
 struct design {
-	para_place_fn	*place;
+	para_trial_fn	*trial;
 	void		*arg;
 	long long	 cap;
 };
@@ -178,7 +183,7 @@ design_pair(void *ctx, double r, int pair[2])
 	struct para_zone z[64];
 	size_t nz;
 
-	if (D->place(D->arg, r, D->cap, &res) != 0)
+	if (D->trial(D->arg, r, D->cap, &res) != 0)
 		return -1;
 	nz = para_zones(&res, NULL, z, 64);
 	pair[0] = nz ? z[0].m : 0;
@@ -193,20 +198,20 @@ design_pair(void *ctx, double r, int pair[2])
  * want as given at path, line.  The radius, or -1 after a diagnostic.
  */
 static double
-design_radius(const struct model_ctx *ctx, int line, const char *path,
+design_radius(const char *file, int line, const char *path,
     const struct int_list *want, double rim, double rhi,
-    para_place_fn *place, void *arg)
+    para_trial_fn *trial, void *arg)
 {
 	/* Enough organs for the base to show its pair, and not many more. */
-	struct design D = { place, arg, 12LL * (want->v[0] + want->v[1]) };
+	struct design D = { trial, arg, 12LL * (want->v[0] + want->v[1]) };
 	char reach[512];
 	double r, est;
 
-	if (para_want_check(ctx, line, path, want) != 0)
+	if (para_want_check(file, line, path, want) != 0)
 		return -1;
 	if (!(rim > 0)) {
 		/* At a pole the pair changes organ by organ: no base pair. */
-		model_error(ctx, line, "parastichies = [m, n] needs a "
+		design_error(file, line, "parastichies = [m, n] needs a "
 		    "receptacle with a rim at its base: at a pole the pair "
 		    "changes from one organ to the next");
 		return -1;
@@ -222,18 +227,18 @@ design_radius(const struct model_ctx *ctx, int line, const char *path,
 		r = para_search(want->v, rhi / 200, rhi, 0, design_pair, &D,
 		    reach, sizeof(reach));
 	if (r == 0) {
-		model_error(ctx, line, "no constant radius shows parastichies "
-		    "%d/%d at the base of this receptacle; the radii tried "
-		    "show %s", want->v[0], want->v[1], reach);
+		design_error(file, line, "no constant radius shows "
+		    "parastichies %d/%d at the base of this receptacle; the "
+		    "radii tried show %s", want->v[0], want->v[1], reach);
 		return -1;
 	}
 	return r;
 }
 
 double
-para_design_receptacle(const struct model_ctx *ctx, const char *group,
+para_design_receptacle(const char *file, const char *group,
     int line, int radius_line, const struct receptacle *rc,
-    const struct int_list *want, int by_area, para_place_fn *place,
+    const struct int_list *want, int by_area, para_trial_fn *trial,
     void *arg)
 {
 	char path[64];
@@ -242,11 +247,11 @@ para_design_receptacle(const struct model_ctx *ctx, const char *group,
 	int npts;
 
 	if (radius_line) {
-		model_error(ctx, line, "give %s.radius or %s.parastichies, "
+		design_error(file, line, "give %s.radius or %s.parastichies, "
 		    "not both", group, group);
 		return -1;
 	}
-	if ((pts = receptacle_points(ctx->file, rc, &npts)) == NULL)
+	if ((pts = receptacle_points(file, rc, &npts)) == NULL)
 		return -1;
 	rim = pts[0][0];
 	/* At most a radius whose cell fits four times round the base. */
@@ -258,5 +263,5 @@ para_design_receptacle(const struct model_ctx *ctx, const char *group,
 	}
 	free(pts);
 	snprintf(path, sizeof(path), "%s.parastichies", group);
-	return design_radius(ctx, line, path, want, rim, rhi, place, arg);
+	return design_radius(file, line, path, want, rim, rhi, trial, arg);
 }

@@ -24,32 +24,32 @@ double	para_search(const int want[2], double lo, double hi, int grows,
 	    para_measure_fn *, void *ctx, char *reach, size_t reachsz);
 
 struct int_list;
-struct model_ctx;
 struct receptacle;
 
-/* Make the structure with a constant radius r, at most cap organs. */
-typedef int para_place_fn(void *arg, double r, long long cap,
+/* A trial structure: made with a constant radius r, at most cap organs. */
+typedef int para_trial_fn(void *arg, double r, long long cap,
     struct result *);
 
 /*
  * Inverse design on a receptacle: the constant radius whose structure
  * shows the pair want, the parastichies of the model's group given at
- * line, at the base of rc; radius_line: where the group gave its radius
- * too (0: it did not, as it must not).  Searched up to a radius whose
- * cell fits four times round the base and, with by_area, four times on
- * the whole receptacle.  place makes a trial structure with arg.  The
- * radius, or -1 after a diagnostic.
+ * line of the scene file (which messages name, as a model's do), at the
+ * base of rc; radius_line: where the group gave its radius too (0: it
+ * did not, as it must not).  Searched up to a radius whose cell fits
+ * four times round the base and, with by_area, four times on the whole
+ * receptacle.  trial makes a trial structure with arg.  The radius, or
+ * -1 after a diagnostic.
  */
-double	para_design_receptacle(const struct model_ctx *, const char *group,
+double	para_design_receptacle(const char *file, const char *group,
 	    int line, int radius_line, const struct receptacle *rc,
-	    const struct int_list *want, int by_area, para_place_fn *place,
+	    const struct int_list *want, int by_area, para_trial_fn *trial,
 	    void *arg);
 
-/* The greatest common divisor of a, b >= 0: pairs are coprime. */
-int	para_gcd(int a, int b);
-
-/* A pair asked for at path, given at line: [m, n], 0 < m < n, coprime. */
-int	para_want_check(const struct model_ctx *, int line, const char *path,
+/*
+ * A pair asked for at path, given at line of file: [m, n], 0 < m < n,
+ * coprime.
+ */
+int	para_want_check(const char *file, int line, const char *path,
 	    const struct int_list *);
 
 #endif

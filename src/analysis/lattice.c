@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "analysis/lattice.h"
 
 #define NEAREST		6	/* steps a point gives the directions */
@@ -38,8 +38,8 @@ dot(const double a[2], const double b[2])
 }
 
 void
-lattice_step(const struct field *F, const struct band_lattice *L, size_t i,
-    size_t j, double l[2])
+lattice_step(const struct point_field *F, const struct band_lattice *L,
+    size_t i, size_t j, double l[2])
 {
 	const struct axis_point *p = &F->ap[i], *q = &F->ap[j];
 	double rho = (p->rho + q->rho) / 2;
@@ -237,7 +237,7 @@ first_shell(const struct band_lattice *L, long long x, long long y)
  * band's points that rounds to a lattice step; how many did, of *total.
  */
 static size_t
-refine(const struct field *F, const size_t *pts, size_t n,
+refine(const struct point_field *F, const size_t *pts, size_t n,
     struct band_lattice *L, size_t *total)
 {
 	double S[3] = { 0, 0, 0 }, X[2] = { 0, 0 }, Y[2] = { 0, 0 }, det;
@@ -305,7 +305,7 @@ refine(const struct field *F, const size_t *pts, size_t n,
 }
 
 int
-lattice_basis(const struct field *F, const size_t *pts, size_t n,
+lattice_basis(const struct point_field *F, const size_t *pts, size_t n,
     struct band_lattice *L)
 {
 	struct dir *d = xcalloc(NEAREST * n + 1, sizeof(*d));
@@ -362,7 +362,7 @@ lattice_basis(const struct field *F, const size_t *pts, size_t n,
 
 /* The point the band's step l from point i should land on, if any. */
 static long
-landing(const struct field *F, const struct band_lattice *L, size_t i,
+landing(const struct point_field *F, const struct band_lattice *L, size_t i,
     const double l[2], long long wx, long long wy)
 {
 	const struct axis_point *p = &F->ap[i];
@@ -390,7 +390,7 @@ landing(const struct field *F, const struct band_lattice *L, size_t i,
  * on where one is missing; -1 if none.
  */
 static long
-next_along(const struct field *F, const struct band_lattice *L, size_t i,
+next_along(const struct point_field *F, const struct band_lattice *L, size_t i,
     int fx, int fy, int *steps)
 {
 	long best = -1;
@@ -471,7 +471,7 @@ taken(long *next, int *steps, size_t n, const size_t *order, size_t lo,
 
 /* The first point at or after s in the order by s. */
 static size_t
-first_at(const struct field *F, double s)
+first_at(const struct point_field *F, double s)
 {
 	size_t lo = 0, hi = F->n;
 
@@ -488,7 +488,7 @@ first_at(const struct field *F, double s)
 
 /* The share of the ring the points of window [lo, hi) go round. */
 static double
-coverage(const struct field *F, size_t lo, size_t hi, double gap)
+coverage(const struct point_field *F, size_t lo, size_t hi, double gap)
 {
 	double *phi = xcalloc(hi - lo + 1, sizeof(*phi)), missing = 0;
 	size_t n = hi - lo;
@@ -604,7 +604,8 @@ estimate(const struct band_lattice *L, const int f[2])
 }
 
 int
-lattice_count(const struct field *F, struct band_lattice *L, int count_them)
+lattice_count(const struct point_field *F, struct band_lattice *L,
+    int count_them)
 {
 	double cross = L->a[0] * L->b[1] - L->a[1] * L->b[0];
 	double reach, cut[CUTS];

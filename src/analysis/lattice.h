@@ -14,7 +14,7 @@
 #include "analysis/kdtree.h"
 
 /* The points as the analysis reads them. */
-struct field {
+struct point_field {
 	const struct axis *A;
 	const struct axis_point *ap;
 	size_t		 n;
@@ -52,8 +52,8 @@ struct band_lattice {
 };
 
 /* The step from point i to point j in the band's coordinates. */
-void	lattice_step(const struct field *, const struct band_lattice *,
-	    size_t i, size_t j, double l[2]);
+void	lattice_step(const struct point_field *,
+	    const struct band_lattice *, size_t i, size_t j, double l[2]);
 /*
  * Step l as whole steps x a + y b, if it lies within tol (a share of
  * |a|) of one: 1, else 0.
@@ -61,15 +61,15 @@ void	lattice_step(const struct field *, const struct band_lattice *,
 int	lattice_round(const struct band_lattice *, const double l[2],
 	    double tol, long long *x, long long *y);
 /* The basis of the band pts[0 .. n); 0, or -1 where none shows. */
-int	lattice_basis(const struct field *, const size_t *pts, size_t n,
-	    struct band_lattice *);
+int	lattice_basis(const struct point_field *, const size_t *pts,
+	    size_t n, struct band_lattice *);
 /*
  * ka and kb: the spirals of each family counted across the ring at the
  * band's s (if count_them), counted set where the ring is whole and the
  * counts agree with the basis's shape (ka_est, kb_est, set either way);
  * -1 where the basis has none.
  */
-int	lattice_count(const struct field *, struct band_lattice *,
+int	lattice_count(const struct point_field *, struct band_lattice *,
 	    int count_them);
 /*
  * ka and kb from the turn of a and b and the divergence alpha (radians,

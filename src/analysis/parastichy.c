@@ -19,10 +19,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "analysis/kdtree.h"
 #include "analysis/parastichy.h"
-#include "analysis/design.h"
 
 #define RUNS	48	/* runs the structure is cut into for the zones */
 #define SAMPLE	2048	/* organs measured in a run at most */
@@ -101,6 +100,18 @@ pair_at(const struct kd *T, const struct result *r, size_t i, int pair[2])
 	}
 }
 
+
+int
+para_gcd(int a, int b)
+{
+	while (b != 0) {
+		int t = a % b;
+
+		a = b;
+		b = t;
+	}
+	return a;
+}
 
 void
 para_nearest(const struct result *r, double *d)

@@ -45,4 +45,7 @@ size_t	para_zones(const struct result *, const int (*pair)[2],
 /* Writes "transition 47/60 21/42" for a transition's zone; its length. */
 int	para_seen_text(const struct para_zone *, char *, size_t);
 
+/* The greatest common divisor of a, b >= 0: pairs are coprime. */
+int	para_gcd(int a, int b);
+
 #endif

@@ -23,8 +23,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
-#include "analysis/design.h"
+#include "base/mem.h"
+#include "analysis/parastichy.h"
 #include "analysis/lattice.h"
 #include "analysis/unordered.h"
 
@@ -173,7 +173,7 @@ step_k(const struct band_lattice *L, const double l[2], double alpha,
  * k' q = +-1, q the turns: parastichy.c's test).
  */
 static void
-contacts_of(const struct field *F, const struct band_lattice *L,
+contacts_of(const struct point_field *F, const struct band_lattice *L,
     double alpha, double noise, size_t i, int older_out, struct uorgan *c,
     int pair[2], int *spans)
 {
@@ -239,7 +239,7 @@ tally_cmp(const void *a, const void *b)
  * spans the lattice.
  */
 static void
-band_pairs(const struct field *F, struct band *B, const size_t *pts,
+band_pairs(const struct point_field *F, struct band *B, const size_t *pts,
     size_t np, int older_out, double noise, struct unordered *U)
 {
 	double alpha = B->alpha_local;
@@ -589,7 +589,7 @@ local_alpha(struct band *B, size_t nb)
  * organs are exactly k divergences apart; a photograph's are not.
  */
 static void
-turn_noise(const struct field *F, struct band *B, size_t nb)
+turn_noise(const struct point_field *F, struct band *B, size_t nb)
 {
 	double *r = xcalloc(3 * F->n + 1, sizeof(*r)), all;
 	size_t nr = 0, *from = xcalloc(nb + 1, sizeof(*from));
@@ -936,7 +936,7 @@ spacing(struct unordered *U, const struct band *B, size_t nb)
  * everywhere), averaged over the points nearest it along the curve.
  */
 static void
-areas(const struct field *F, double *area)
+areas(const struct point_field *F, double *area)
 {
 	double *d2 = xcalloc(F->n, sizeof(*d2)), sum = 0;
 	size_t n = F->n, lo = 0, hi = 0;
@@ -968,7 +968,7 @@ unordered_measure(const struct axis *A, const struct axis_point *ap,
     const double (*raw)[3], size_t n, int older_out)
 {
 	struct unordered *U = unordered_new(A, n);
-	struct field F = { A, ap, n, NULL, NULL, NULL, NULL, NULL, NULL,
+	struct point_field F = { A, ap, n, NULL, NULL, NULL, NULL, NULL, NULL,
 	    NULL };
 	double (*p)[3], *s, *area;
 	uint32_t (*nn)[KD_K];

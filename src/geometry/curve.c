@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "geometry/curve.h"
-#include "mem.h"
+#include "base/mem.h"
 
 #define PIECES_PER_CURVE	512	/* pieces along a smooth profile */
 #define PIECES_MAX		8192
@@ -559,17 +559,17 @@ convex_radius(const double b[4][2])
 }
 
 /*
- * At u: g(u) - S2, with g(u) = |p(u) - q|^2, half its slope (p - q).p'
- * and |p'|^2, which the tangent's exit from the disk needs.  Kept, so
- * that no point is evaluated twice.
+ * At u: g(u) - S2, with g(u) = |p(u) - q|^2 the squared distance from
+ * q, half its slope (p - q).p' and |p'|^2, which the tangent's exit
+ * from the disk needs.  Kept, so that no point is evaluated twice.
  */
-struct gap {
+struct sq_dist {
 	double	 f, half, dd;
 };
 
 static inline double
-gap(const struct piece *p, double u, const double q[2], double S2,
-    struct gap *g)
+sq_dist(const struct piece *p, double u, const double q[2], double S2,
+    struct sq_dist *g)
 {
 	double x[2], d[2];
 
@@ -595,10 +595,10 @@ gap(const struct piece *p, double u, const double q[2], double S2,
 
 static double
 crossing(const struct piece *p, double lo, double hi, const double q[2],
-    double S2, const struct gap *at_lo, const struct gap *at_hi)
+    double S2, const struct sq_dist *at_lo, const struct sq_dist *at_hi)
 {
 	double a = at_lo->dd, b = at_lo->half, disc, top = hi;
-	struct gap h = *at_hi, g;	/* h: g at hi, always */
+	struct sq_dist h = *at_hi, g;	/* h: g at hi, always */
 
 	disc = b * b - a * at_lo->f;
 	if (a > 0 && disc >= 0) {
@@ -609,7 +609,7 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 			 * Still inside, but rising: a convex function lies
 			 * above its tangent, so the tangent's zero is free.
 			 */
-			if (gap(p, guess, q, S2, &g) >= 0) {
+			if (sq_dist(p, guess, q, S2, &g) >= 0) {
 				hi = guess;
 				h = g;
 			} else if (g.half > 0) {
@@ -618,7 +618,7 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 				lo = guess;
 				if (beyond < hi) {
 					hi = beyond;
-					gap(p, hi, q, S2, &h);
+					sq_dist(p, hi, q, S2, &h);
 				}
 			}
 		}
@@ -637,7 +637,7 @@ crossing(const struct piece *p, double lo, double hi, const double q[2],
 			break;
 		if (!(nu > lo))
 			nu = lo + (hi - lo) / 2;
-		if (gap(p, nu, q, S2, &g) < 0)
+		if (sq_dist(p, nu, q, S2, &g) < 0)
 			lo = nu;
 		else {
 			hi = nu;
@@ -663,24 +663,24 @@ exit_sub(const struct piece *p, const double b[4][2], double near2,
     double kappa)
 {
 	double k, half[2][4][2], mid;
-	struct gap lo, hi;
+	struct sq_dist lo, hi;
 
 	if (near2 >= S2)
 		return u0;
 	if (far2 < S2)
 		return -1;
-	if (gap(p, u0, q, S2, &lo) >= 0)
+	if (sq_dist(p, u0, q, S2, &lo) >= 0)
 		return u0;
 	/* A part of a convex piece is convex: no need to look again. */
 	k = far2 < kappa * kappa ? kappa : convex_radius(b);
 	if (far2 < k * k) {
-		if (gap(p, u1, q, S2, &hi) < 0)
+		if (sq_dist(p, u1, q, S2, &hi) < 0)
 			return -1;
 		return crossing(p, u0, u1, q, S2, &lo, &hi);
 	}
 	mid = (u0 + u1) / 2;
 	if (mid <= u0 || mid >= u1)	/* as small as doubles go */
-		return gap(p, u1, q, S2, &hi) >= 0 ? u1 : -1;
+		return sq_dist(p, u1, q, S2, &hi) >= 0 ? u1 : -1;
 	bez_split(b, 0.5, half[0], half[1]);
 	if ((k = exit_part(p, (const double (*)[2])half[0], u0, mid, q, S2,
 	    0)) >= 0)

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 
 #include "geometry/geometry.h"
-#include "geometry/vec.h"
+#include "base/vec.h"
 
 /*
  * n*deg mod 360.  For a million organs n*deg is near 1e8 and its

@@ -12,9 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/curve.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "geometry/receptacle.h"
 
 static const char *const shape_names[] = {

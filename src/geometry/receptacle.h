@@ -6,7 +6,7 @@
 #ifndef RECEPTACLE_H
 #define RECEPTACLE_H
 
-#include "scene/settings.h"
+#include "base/table.h"
 
 /* The presets (receptacle.shape). */
 enum shape {

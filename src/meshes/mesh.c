@@ -3,9 +3,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "meshes/mesh.h"
-#include "phyllo.h"
+#include "base/phyllo.h"
 
 /* The icosahedron: (0, +-1, +-t) and its cyclic turns, t the golden ratio. */
 static const signed char ico_v[12][3] = {

@@ -14,11 +14,12 @@
 
 #include "compat/compat.h"
 #include "scene/compound.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/inputs.h"
+#include "base/mem.h"
 #include "meshes/meshes.h"
 #include "meshes/obj.h"
-#include "writers/output.h"
+#include "base/path.h"
 
 /* A file read this run. */
 struct read {
@@ -32,7 +33,7 @@ static size_t nreads;
 static void
 library_read(const char *path)
 {
-	output_input(path, "a material library of an organ mesh");
+	input_add(path, "a material library of an organ mesh");
 }
 
 /* The mesh in the file at path, read unless it was; NULL after a
@@ -83,7 +84,7 @@ add(struct meshes *M, struct named *at, const struct part *p, size_t j,
 	const struct scene *sc = &p->sc;
 	const char *name = sc->objects[j];
 	int line = sc->object_mesh_line[j];
-	char *path = compound_resolve(p->file, sc->object_mesh[j]);
+	char *path = path_resolve(p->file, sc->object_mesh[j]);
 	const struct mesh *mesh;
 	const char *why;
 	struct sys_stat st;
@@ -229,10 +230,10 @@ meshes_inputs(const struct compound *C)
 
 			if (p->sc.object_mesh[j] == NULL)
 				continue;
-			path = compound_resolve(p->file, p->sc.object_mesh[j]);
+			path = path_resolve(p->file, p->sc.object_mesh[j]);
 			snprintf(what, sizeof(what), "the mesh of organ object "
 			    "\"%s\"", p->sc.objects[j]);
-			output_input(path, what);
+			input_add(path, what);
 			obj_libraries(path, library_read);
 			free(path);
 		}

@@ -37,7 +37,7 @@ int	meshes_load(struct meshes *M, struct compound *C, unsigned flags);
 /* Object name's mesh, or NULL: it has none (a placeholder stands in). */
 const struct mesh *meshes_find(const struct meshes *, const char *name);
 void	meshes_free(struct meshes *);
-/* Tell output_input() each OBJ file C's scenes name: -o may not. */
+/* Tell input_add() each OBJ file C's scenes name: -o may not. */
 void	meshes_inputs(const struct compound *C);
 /* Forget every mesh read: the run is over. */
 void	meshes_forget(void);

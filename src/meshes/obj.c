@@ -20,8 +20,8 @@
 
 #include "compat/compat.h"
 #include "scene/cfgtext.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "meshes/idtable.h"
 #include "meshes/mtl.h"
 #include "meshes/obj.h"

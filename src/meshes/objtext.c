@@ -10,8 +10,8 @@
 
 #include "compat/compat.h"
 #include "scene/cfgtext.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "meshes/objtext.h"
 
 int

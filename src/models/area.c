@@ -18,11 +18,11 @@
 #include <stdlib.h>
 
 #include "analysis/design.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/curve.h"
 #include "geometry/geometry.h"
 #include "geometry/receptacle.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/model.h"
 
 enum { AR_RECEPTACLE, AR_RADIUS, AR_PARASTICHIES, AR__N };
@@ -247,7 +247,7 @@ trial_place(void *arg, double r, long long cap, struct result *res)
 }
 
 static int
-area_run(const struct model_ctx *ctx, struct result *res)
+area_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct area *P = ctx->params;
 	struct trial T = { ctx, P };
@@ -256,8 +256,9 @@ area_run(const struct model_ctx *ctx, struct result *res)
 
 	if (!at)
 		return place_area(ctx, P, res, 0, 0);
-	r = para_design_receptacle(ctx, "area", at, P->given[AR_RADIUS],
-	    &P->receptacle, &P->parastichies, 1, trial_place, &T);
+	r = para_design_receptacle(ctx->file, "area", at,
+	    P->given[AR_RADIUS], &P->receptacle, &P->parastichies, 1,
+	    trial_place, &T);
 	/* --info's radius line is the one chosen. */
 	return r < 0 ? -1 : place_area(ctx, P, res, r, 0);
 }
@@ -268,5 +269,5 @@ const struct model area_model = {
 	    "(Fibonacci sphere)",
 	.settings = &area_table,
 	.size = sizeof(struct area),
-	.run = area_run,
+	.make = area_make,
 };

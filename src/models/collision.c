@@ -22,11 +22,11 @@
 #include <stdlib.h>
 
 #include "analysis/design.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/curve.h"
 #include "geometry/geometry.h"
 #include "geometry/receptacle.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/collision.h"
 #include "models/collision_cover.h"
 #include "models/collision_impl.h"
@@ -559,7 +559,7 @@ trial_place(void *arg, double r, long long cap, struct result *res)
 }
 
 static int
-collision_run(const struct model_ctx *ctx, struct result *res)
+collision_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct collision *P = ctx->params;
 	int at = P->given[CO_PARASTICHIES];
@@ -567,8 +567,9 @@ collision_run(const struct model_ctx *ctx, struct result *res)
 
 	if (!at)
 		return collision_place(ctx, res, PLACE_EXACT);
-	r = para_design_receptacle(ctx, "collision", at, P->given[CO_RADIUS],
-	    &P->receptacle, &P->parastichies, 0, trial_place, (void *)ctx);
+	r = para_design_receptacle(ctx->file, "collision", at,
+	    P->given[CO_RADIUS], &P->receptacle, &P->parastichies, 0,
+	    trial_place, (void *)ctx);
 	if (r < 0 || place(ctx, res, PLACE_EXACT, r, 0) != 0)
 		return -1;
 	result_info(res, "radius", 1, r);
@@ -581,5 +582,5 @@ const struct model collision_model = {
 	    "receptacle",
 	.settings = &collision_table,
 	.size = sizeof(struct collision),
-	.run = collision_run,
+	.make = collision_make,
 };

@@ -139,7 +139,7 @@
 #include <string.h>
 
 #include "models/collision_cover.h"
-#include "mem.h"
+#include "base/mem.h"
 
 #define CELL_FRAC	0.6	/* row height, as a fraction of r_min */
 #define CELLS_MIN	(1 << 12)

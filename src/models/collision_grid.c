@@ -20,7 +20,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "models/collision_impl.h"
 
 /* Put primordium i in its cell's list; 1 if that took a new slot. */

@@ -33,7 +33,7 @@
  */
 #include <math.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "models/collision_impl.h"
 
 #define REFINE_FALL	0.03	/* of r: a proof for r lasts about so far */

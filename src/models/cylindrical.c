@@ -13,10 +13,10 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "analysis/design.h"
-#include "diag.h"
+#include "analysis/parastichy.h"
+#include "base/diag.h"
 #include "geometry/geometry.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/cylindrical_lattice.h"
 #include "models/model.h"
 
@@ -199,7 +199,7 @@ radius_at(const struct model_ctx *ctx, const struct cylindrical *cy,
 }
 
 static int
-cylindrical_run(const struct model_ctx *ctx, struct result *res)
+cylindrical_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct cylindrical *cy = ctx->params;
 	struct expr_env env = { { 0 }, (uint64_t)ctx->seed, 0 };
@@ -267,7 +267,7 @@ const struct model cylindrical_model = {
 	.help = "van Iterson: a parastichy pair on a cylinder, or a taper",
 	.settings = &cylindrical_table,
 	.size = sizeof(struct cylindrical),
-	.run = cylindrical_run,
+	.make = cylindrical_make,
 	.needs_count = 1,
 	.count_else = "length",
 };

@@ -25,9 +25,9 @@
 #include <stdlib.h>
 
 #include "analysis/parastichy.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/geometry.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/inhibition.h"
 #include "models/inhibition_impl.h"
 #include "models/model.h"
@@ -693,7 +693,7 @@ inhibition_place(const struct model_ctx *ctx, struct result *res, int how)
 }
 
 static int
-inhibition_run(const struct model_ctx *ctx, struct result *res)
+inhibition_make(const struct model_ctx *ctx, struct result *res)
 {
 	return inhibition_place(ctx, res, 0);
 }
@@ -719,7 +719,7 @@ const struct model inhibition_model = {
 	    "least; the angle emerges",
 	.settings = &inhibition_table,
 	.size = sizeof(struct inhibition),
-	.run = inhibition_run,
+	.make = inhibition_make,
 	.needs_count = 1,
 	.emerges = 1,
 	.unused = inhibition_unused,

@@ -8,7 +8,7 @@
 #include "models/inhibition_impl.h"
 
 /* A part of a gap: its ends and their cosines and sines. */
-struct part {
+struct gap_part {
 	double		 lo, hi, cl, sl, ch, sh;
 };
 
@@ -19,7 +19,7 @@ struct part {
  * selects only, which it can run on vectors (cuts_lanes()).
  */
 static inline double
-least_cos(double c, double s, const struct part *p)
+least_cos(double c, double s, const struct gap_part *p)
 {
 	double x = c * p->sl - s * p->cl, y = s * p->ch - c * p->sh;
 	double a = p->cl * c + p->sl * s, b = p->ch * c + p->sh * s;
@@ -34,7 +34,7 @@ least_cos(double c, double s, const struct part *p)
  * cosines and sines alone: no call to the maths library a primordium.
  */
 static double
-least_pull(const struct field *F, size_t i, const struct part *p)
+least_pull(const struct field *F, size_t i, const struct gap_part *p)
 {
 	double cd, r = F->r[F->n - 1 - i];
 
@@ -132,9 +132,9 @@ parts_lanes(const struct cutv *v, size_t a0, size_t a1, size_t b1,
 /* The same, each where it pulls least in part p; s = 3. */
 static HOT double
 cuts_lanes(const struct cutv *v, size_t from, size_t to,
-    const struct part *part)
+    const struct gap_part *part)
 {
-	const struct part pt = *part, *p = &pt;	/* in registers */
+	const struct gap_part pt = *part, *p = &pt;	/* in registers */
 	double acc[LANES] = { 0 }, sum = 0;
 	size_t d = from;
 
@@ -160,7 +160,7 @@ cuts_lanes(const struct cutv *v, size_t from, size_t to,
  */
 static inline double
 cuts_above(const struct field *F, const struct cutv *v, size_t from,
-    size_t to, const struct part *p)
+    size_t to, const struct gap_part *p)
 {
 	double sum = 0;
 
@@ -183,7 +183,7 @@ cuts_above(const struct field *F, const struct cutv *v, size_t from,
  */
 static inline int
 straight_from(const struct field *F, size_t from, size_t to,
-    const struct part *gap)
+    const struct gap_part *gap)
 {
 	const struct cutv *v = &F->cp;
 
@@ -251,7 +251,7 @@ sides_above(const struct field *F, size_t a0, size_t a1, double xa,
  * pulls anywhere; 0 for one in the far field, which is bounded apart.
  */
 static double
-above_floor(const struct field *F, size_t i, const struct part *p)
+above_floor(const struct field *F, size_t i, const struct gap_part *p)
 {
 	return i >= F->from ? least_pull(F, i, p) - F->fl[F->n - 1 - i] : 0;
 }
@@ -263,7 +263,7 @@ above_floor(const struct field *F, size_t i, const struct part *p)
  * them one by one from four arrays).
  */
 static double
-mid_above(const struct field *F, size_t k, const struct part *p)
+mid_above(const struct field *F, size_t k, const struct gap_part *p)
 {
 	double sum = 0;
 
@@ -328,7 +328,7 @@ inhib_gap_bound(const struct field *F, const struct cut *cuts, size_t k,
 	double h = (b - a) / parts, least = HUGE_VAL, far = 0, ch = 1, sh = 0;
 	double coarse = 0;
 	const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
-	struct part pt, whole = { a, b, cuts[g].c, cuts[g].s, end->c,
+	struct gap_part pt, whole = { a, b, cuts[g].c, cuts[g].s, end->c,
 	    end->s };
 	double xs[SUBPARTS + 1], ys[SUBPARTS + 1], near[SUBPARTS];
 	int straight, batch;
@@ -459,7 +459,7 @@ first_near(const struct field *F, const struct cut *cuts, size_t k,
 		size_t first = kn > 0 ? (F->gpos[g] + kn - nc / 2) % kn : 0;
 		size_t mid = first + nc / 2;
 		const struct cut *end = &cuts[g + 1 < k ? g + 1 : 0];
-		struct part whole = { cuts[g].th, gap_end(cuts, k, g),
+		struct gap_part whole = { cuts[g].th, gap_end(cuts, k, g),
 		    cuts[g].c, cuts[g].s, end->c, end->s };
 
 		if (!straight_from(F, first, first + nc, &whole))

@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "models/inhibition_impl.h"
 
 #define FAR_TAIL	1e-12	/* its truncation, of a primordium's pull */

@@ -38,7 +38,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "mem.h"
+#include "base/mem.h"
 #include "models/inhibition.h"
 #include "models/inhibition_impl.h"
 

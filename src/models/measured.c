@@ -20,12 +20,12 @@
 #include "analysis/kdtree.h"
 #include "analysis/unordered.h"
 #include "compat/compat.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "geometry/geometry.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "models/measured_csv.h"
 #include "models/model.h"
-#include "scene/compound.h"
+#include "base/path.h"
 
 enum { MS_POINTS, MS_YAXIS, MS_CENTRE, MS_OUTER, MS_OBLIQUE, MS__N };
 
@@ -95,7 +95,7 @@ open_points(const struct model_ctx *ctx, const struct measured *P,
 		    "%zu", P->points.n);
 		return -1;
 	}
-	*path = compound_resolve(ctx->file, P->points.v[0]);
+	*path = path_resolve(ctx->file, P->points.v[0]);
 	/* A FIFO would wait for a writer for ever. */
 	why = sys_stat(*path, &st) != 0 ? strerror(errno) :
 	    st.kind == SYS_DIR ? strerror(EISDIR) :
@@ -405,7 +405,7 @@ place(struct result *res, const double (*p)[3], const struct axis *A,
 }
 
 static int
-measured_run(const struct model_ctx *ctx, struct result *res)
+measured_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct measured *M = ctx->params;
 	struct points P;
@@ -493,7 +493,7 @@ measured_inputs(const void *params, const char *scene,
 
 	if (!M->given[MS_POINTS] || M->points.n != 1)
 		return;
-	path = compound_resolve(scene, M->points.v[0]);
+	path = path_resolve(scene, M->points.v[0]);
 	add(path, "the points file");
 	free(path);
 }
@@ -504,7 +504,7 @@ const struct model measured_model = {
 	    "an order",
 	.settings = &measured_table,
 	.size = sizeof(struct measured),
-	.run = measured_run,
+	.make = measured_make,
 	.count_else = "points",
 	.emerges = 1,
 	.counts_itself = 1,

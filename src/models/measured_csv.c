@@ -22,8 +22,8 @@
 #include <string.h>
 
 #include "compat/compat.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "models/measured_csv.h"
 
 enum { COL_X, COL_Y, COL_Z, COL_N, COL_RADIUS, COL__N };
@@ -44,9 +44,7 @@ struct reader {
 
 static int
 fail(const struct reader *R, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    PRINTFLIKE(2, 3)
     ;
 
 static int

@@ -4,13 +4,13 @@
 
 #include "compat/compat.h"
 #include "result/organ.h"
-#include "scene/expr.h"
-#include "scene/settings.h"
+#include "base/expr.h"
+#include "base/table.h"
 
 /*
  * What a model sees of the scene: the top-level settings it uses, its
  * own group's settings, and where to send messages and progress.  The
- * scene layer builds it (scene_model_ctx()); a model never sees the
+ * pipeline builds it (scene_model_ctx(), pipeline/); a model never sees the
  * scene itself.
  */
 struct model_ctx {
@@ -31,8 +31,9 @@ struct model_ctx {
 /*
  * A model: its name in the scene file, its group of settings (a table
  * over its own parameter struct, which the loader allocates, fills with
- * defaults and frees), and the function that places the organs.  Adding
- * a model is its file, defining one of these, and a line in models.c.
+ * defaults and frees), and make, the function that places the organs.
+ * Adding a model is its file, defining one of these, and a line in
+ * models.c.
  */
 struct model {
 	const char	*name;
@@ -43,7 +44,7 @@ struct model {
 	 * 0 on success, res filled and its svg and rim_last set; -1
 	 * after a diagnostic, leaving res empty.
 	 */
-	int		(*run)(const struct model_ctx *, struct result *);
+	int		(*make)(const struct model_ctx *, struct result *);
 	int		 needs_count;	/* the scene must give count, ... */
 	const char	*count_else;	/* ... or this setting of the group */
 	int		 emerges;	/* the angles are found, not given: the

@@ -44,7 +44,7 @@ model_run(const struct model *m, const struct model_ctx *ctx,
 			model_error(ctx, 1, "missing setting 'count'");
 		return -1;
 	}
-	return m->run(ctx, res);
+	return m->make(ctx, res);
 }
 
 void

@@ -148,7 +148,7 @@ trial_pair(void *ctx, double x, int pair[2])
 }
 
 static int
-planar_run(const struct model_ctx *ctx, struct result *res)
+planar_make(const struct model_ctx *ctx, struct result *res)
 {
 	const struct planar *p = ctx->params;
 	const struct int_list *want = &p->parastichies;
@@ -160,7 +160,7 @@ planar_run(const struct model_ctx *ctx, struct result *res)
 		return -1;
 	if (!p->given[PL_PARASTICHIES])
 		return place(ctx, p, (size_t)ctx->count, res);
-	if (para_want_check(ctx, p->given[PL_PARASTICHIES],
+	if (para_want_check(ctx->file, p->given[PL_PARASTICHIES],
 	    "planar.parastichies", want) != 0)
 		return -1;
 	/* Counts up to where the rim shows about 4 n around it. */
@@ -184,7 +184,7 @@ const struct model planar_model = {
 	    "dome",
 	.settings = &planar_table,
 	.size = sizeof(struct planar),
-	.run = planar_run,
+	.make = planar_make,
 	.needs_count = 1,
 	.count_else = "parastichies",
 };

@@ -643,6 +643,17 @@ def wrapped(context, text, icon=False):
     return wrap(text, lambda line: text_width(context, line) <= room)
 
 
+def labels(layout, context, text, icon=None):
+    """text as labels in layout, a line each, wrapped to the sidebar's
+    width; with icon, the first line shows it and the others stand as
+    far in (BLANK1), so that the text reads as one block."""
+    for i, line in enumerate(wrapped(context, text, icon is not None)):
+        if icon is None:
+            layout.label(text=line)
+        else:
+            layout.label(text=line, icon=icon if i == 0 else "BLANK1")
+
+
 class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
     """The settings of the structure imported last (or chosen)."""
     bl_space_type = "VIEW_3D"
@@ -662,8 +673,7 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
         if st.error:
             box = layout.box()
             box.alert = True
-            for i, line in enumerate(wrapped(context, st.error, True)):
-                box.label(text=line, icon="ERROR" if i == 0 else "BLANK1")
+            labels(box, context, st.error, "ERROR")
         # Update, with the last run's time, the wider: in half the
         # sidebar's width it was cut short.
         row = layout.split(factor=0.35)
@@ -675,14 +685,11 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
         if last is not None:
             # The setting changed last, whole: what the rows leave out.
             box = layout.box()
-            for i, line in enumerate(wrapped(
-                    context, "%s: %s" % (last.path, last.type), True)):
-                box.label(text=line, icon="INFO" if i == 0 else "BLANK1")
-            for line in wrapped(context, "; ".join(w for w in (
-                    last.doc, last.range and "range " + last.range,
-                    last.unit, "default " + last.default,
-                    "file " + (last.written or "none")) if w)):
-                box.label(text=line)
+            labels(box, context, "%s: %s" % (last.path, last.type), "INFO")
+            labels(box, context, "; ".join(w for w in (
+                last.doc, last.range and "range " + last.range,
+                last.unit, "default " + last.default,
+                "file " + (last.written or "none")) if w))
         box, group, part = None, None, ""
         for item in st.settings:
             if ":" in item.path and not part:
@@ -709,8 +716,7 @@ class VIEW3D_PT_phyllotaxis(bpy.types.Panel):
             else:
                 split.prop(item, field_of(item), text="")
             if not item.applies:
-                for line in wrapped(context, item.why):
-                    box.label(text=line)
+                labels(box, context, item.why)
         row = layout.row()
         row.operator("phyllo.save")
         row.operator("phyllo.revert")

@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 
 const struct xform xform_identity = {
 	{ { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, 1, { 0, 0, 0 }
@@ -207,16 +207,39 @@ tally(struct flat *F, size_t i)
 	return F->part[i].leaves = per;
 }
 
-void
-flatten_view(const struct result *r, struct result *out)
+static void
+flat_free(struct flat *F)
+{
+	if (F == NULL)
+		return;
+	for (size_t i = 0; i < F->n; i++) {
+		free(F->part[i].id);
+		free(F->part[i].leaves);
+	}
+	free(F->part);
+	free(F);
+}
+
+/* The parts of r, their leaves' objects named in out's objects. */
+static struct flat *
+flat_make(const struct result *r, struct result *out)
 {
 	struct flat *F = xcalloc(1, sizeof(*F));
-	double leaves = 0;
 
-	*out = (struct result){0};
 	F->top = r;
 	gather(F, out, r);
 	F->nobjects = out->nobjects;
+	return F;
+}
+
+void
+flatten_view(const struct result *r, struct result *out)
+{
+	struct flat *F;
+	double leaves = 0;
+
+	*out = (struct result){0};
+	F = flat_make(r, out);
 	for (size_t k = 0; k < F->nobjects; k++)
 		leaves += tally(F, 0)[k];
 	out->flat = F;
@@ -236,32 +259,29 @@ flatten_view(const struct result *r, struct result *out)
 	out->frame_f = r->frame_f;
 }
 
+void
+flatten_free(struct result *view)
+{
+	flat_free(view->flat);
+	view->flat = NULL;
+	result_free(view);
+}
+
 double
 flatten_leaves(const struct result *r)
 {
-	struct result v;
+	struct result names = { 0 };
+	struct flat *F;
 	double leaves = 0;
 
 	if (r->sub == NULL)
 		return (double)r->count;
-	flatten_view(r, &v);
-	for (size_t k = 0; k < v.nobjects; k++)
-		leaves += tally(v.flat, 0)[k];
-	result_free(&v);
+	F = flat_make(r, &names);
+	for (size_t k = 0; k < F->nobjects; k++)
+		leaves += tally(F, 0)[k];
+	free(names.objects);
+	flat_free(F);
 	return leaves;
-}
-
-void
-flat_free(struct flat *F)
-{
-	if (F == NULL)
-		return;
-	for (size_t i = 0; i < F->n; i++) {
-		free(F->part[i].id);
-		free(F->part[i].leaves);
-	}
-	free(F->part);
-	free(F);
 }
 
 /* What result_each() carries through a view's walk. */

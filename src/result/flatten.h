@@ -40,6 +40,8 @@ void	place_organ(const struct xform *P, const struct organ *o,
  * them, its other facts r's; result_each() hands the leaves out.
  */
 void	flatten_view(const struct result *r, struct result *out);
+/* Free a view (result_free() leaves its walk, which it does not know). */
+void	flatten_free(struct result *view);
 /* How many leaves r has, from each part's tally: no walk. */
 double	flatten_leaves(const struct result *r);
 
@@ -67,6 +69,5 @@ void	result_sample(const struct result *r, size_t m, sample_fn *fn,
 	    void *ctx);
 /* How many organs of r are object k (a view: its tally). */
 double	result_object_organs(const struct result *r, size_t k);
-void	flat_free(struct flat *);
 
 #endif

@@ -4,8 +4,8 @@
 
 #include <stddef.h>
 
-#include "phyllo.h"
-#include "geometry/vec.h"
+#include "base/phyllo.h"
+#include "base/vec.h"
 
 /*
  * One placed organ in the world frame (right-handed, Z up).  The frame
@@ -76,7 +76,8 @@ struct result {
 	const struct result **sub;
 	/*
 	 * A view of a compound with its parts opened (flatten.h): organs
-	 * is NULL and the leaves are walked from here; owned.
+	 * is NULL and the leaves are walked from here; owned, freed by
+	 * flatten_free() (result_free() does not know it).
 	 */
 	struct flat	*flat;
 	/*

@@ -21,8 +21,8 @@
 #include <libconfig.h>
 
 #include "scene/cfgtext.h"
-#include "mem.h"
-#include "writers/sink.h"
+#include "base/mem.h"
+#include "base/sink.h"
 
 /* Length of the comment or string at p, or 0 if none starts there. */
 static size_t

@@ -1,6 +1,7 @@
 /*
  * compound.c - load a scene and, depth first, the scenes its organs are
- * made of; run them, parts before the structures that place them.
+ * made of, each after the parts it uses (the pipeline runs them in that
+ * order: pipeline/scene_run.c).
  *
  * Object names are one namespace across the whole tree, as they are in
  * POV-Ray and in a .blend: a name made of a scene is made of that scene
@@ -13,8 +14,9 @@
 
 #include "compat/compat.h"
 #include "scene/compound.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
+#include "base/path.h"
 
 /* The scenes being loaded, innermost first: what a cycle would revisit. */
 struct chain {
@@ -30,28 +32,13 @@ struct loader {
 	int		(*check)(const struct scene *);
 };
 
-static struct part *
-find_part(const struct compound *C, const char *object)
+struct part *
+compound_part(const struct compound *C, const char *object)
 {
 	for (size_t i = 0; i < C->n; i++)
 		if (strcmp(C->parts[i]->object, object) == 0)
 			return C->parts[i];
 	return NULL;
-}
-
-char *
-compound_resolve(const char *from, const char *rel)
-{
-	size_t dir = strcmp(from, "<stdin>") != 0 ?
-	    (size_t)(sys_base(from) - from) : 0;
-	char *p;
-
-	if (sys_absolute(rel) || dir == 0)
-		return xstrdup(rel);
-	p = xmalloc(dir + strlen(rel) + 1);
-	memcpy(p, from, dir);
-	strcpy(p + dir, rel);
-	return p;
 }
 
 /* "a.cfg -> b.cfg -> a.cfg": the chain from the top down to file. */
@@ -88,8 +75,8 @@ load_parts(struct loader *L, struct part *p, const struct chain *me)
 
 		if (sc->object_scene[j] == NULL)
 			continue;
-		path = compound_resolve(p->file, sc->object_scene[j]);
-		had = find_part(L->C, name);
+		path = path_resolve(p->file, sc->object_scene[j]);
+		had = compound_part(L->C, name);
 		if (had != NULL) {
 			struct sys_stat a, b;
 
@@ -213,7 +200,7 @@ names_agree(const struct compound *C)
 		}
 		for (size_t j = 0; j < sc->nobjects; j++)
 			if (sc->object_scene[j] == NULL &&
-			    (q = find_part(C, sc->objects[j])) != NULL) {
+			    (q = compound_part(C, sc->objects[j])) != NULL) {
 				diag(ST_SCENE, sc->file, sc->object_line[j], 0,
 				    "organ object \"%s\" is a plain object "
 				    "here but is made of %s in %s: one name, "
@@ -235,37 +222,6 @@ compound_load(struct compound *C, const char *path, const struct loading *ld,
 	if (load(&L, path, "", NULL, 0) != 0)
 		return -1;
 	return names_agree(C);
-}
-
-int
-compound_run(struct compound *C, const struct frame *fr,
-    void (*progress)(long long done, int last))
-{
-	for (size_t i = 0; i < C->n; i++) {
-		struct part *p = C->parts[i];
-		struct result *r = &p->res;
-
-		if (scene_run(&p->sc, r, progress) != 0) {
-			if (p->from != NULL)
-				diag(ST_SCENE, p->from, p->from_line, 0, "in %s, "
-				    "the scene of organ object \"%s\" included "
-				    "here", p->file, p->object);
-			return -1;
-		}
-		r->frames = fr != NULL ? fr->count : 1;
-		if (p->object[0] != '\0') {
-			r->part = 1;
-			memcpy(r->name, p->object, sizeof(r->name));
-		}
-		for (size_t j = 0; j < p->sc.nobjects; j++) {
-			if (p->sc.object_scene[j] == NULL)
-				continue;
-			if (r->sub == NULL)
-				r->sub = xcalloc(r->nobjects, sizeof(*r->sub));
-			r->sub[j] = &find_part(C, p->sc.objects[j])->res;
-		}
-	}
-	return 0;
 }
 
 void

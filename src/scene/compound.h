@@ -2,7 +2,8 @@
  * compound.h - a scene and the scenes its organs are made of.  An organs
  * entry with scene = "floret.cfg" makes its object a part: a structure
  * of its own, placed once per organ like any object.  A compound is
- * every scene of the tree, loaded and run, each part once.
+ * every scene of the tree, loaded and run, each part once: loaded
+ * here, run by the pipeline (pipeline/pipeline.h).
  */
 #ifndef COMPOUND_H
 #define COMPOUND_H
@@ -36,16 +37,9 @@ struct compound {
  */
 int	compound_load(struct compound *, const char *path,
 	    const struct loading *ld, int (*check)(const struct scene *));
-/*
- * Run every scene, parts first, and link the parts; progress, if not
- * NULL, is told of long placements (model.h).  0 or -1.
- */
-int	compound_run(struct compound *, const struct frame *fr,
-	    void (*progress)(long long done, int last));
 void	compound_free(struct compound *);
-/* rel taken relative to the directory of the scene file from, which
- * names it; allocated. */
-char	*compound_resolve(const char *from, const char *rel);
+/* The part making object, or NULL: none does. */
+struct part *compound_part(const struct compound *, const char *object);
 
 static inline const struct result *
 compound_main(const struct compound *c)

@@ -12,8 +12,8 @@
 
 #include "compat/compat.h"
 #include "models/model.h"
-#include "scene/expr.h"
-#include "scene/settings.h"
+#include "base/expr.h"
+#include "base/table.h"
 
 struct scene;
 

@@ -15,8 +15,8 @@
 #include <string.h>
 
 #include "scene/cfgtext.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "scene/override.h"
 
 /* A libconfig name ([A-Za-z*][-A-Za-z0-9_*]*), or an index (digits). */

@@ -6,8 +6,8 @@
 #ifndef OVERRIDE_H
 #define OVERRIDE_H
 
-#include "phyllo.h"
-#include "scene/settings.h"
+#include "base/phyllo.h"
+#include "base/table.h"
 
 struct override {
 	const char	*arg;			/* as given */

@@ -15,13 +15,13 @@
 
 #include "compat/compat.h"
 #include "scene/cfgtext.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "models/model.h"
 #include "scene/load.h"
 #include "scene/override.h"
 #include "scene/scene.h"
-#include "scene/settings.h"
+#include "base/table.h"
 
 /*
  * The default name: the file's base name made into an identifier and

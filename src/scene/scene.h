@@ -5,9 +5,9 @@
 #include <stdio.h>
 
 #include "compat/compat.h"
-#include "scene/expr.h"
+#include "base/expr.h"
 #include "result/organ.h"
-#include "scene/settings.h"
+#include "base/table.h"
 
 #define SCENE_BYTES_MAX	(16L * 1024 * 1024)
 #define SCENE_PATH_MAX	1024		/* bytes in a sub-scene's file name */
@@ -125,20 +125,6 @@ void	 scene_free(struct scene *);
 int	 scene_applies(const struct scene *, const struct table *tab,
 	    size_t k, char *why, size_t sz);
 
-struct model_ctx;
-
-/* What the scene's model sees (model.h); progress may be NULL. */
-void	 scene_model_ctx(const struct scene *, struct model_ctx *,
-	    void (*progress)(long long done, int last));
-/*
- * Run the scene's model, then apply its organs entries, leaving a
- * result that carries everything writers need (organ.h); progress, if
- * not NULL, is told of a long placement.  0, or -1 after a diagnostic.
- */
-int	 scene_run(const struct scene *, struct result *,
-	    void (*progress)(long long done, int last));
-/* Apply the scene's organs entries to placed organs (organs.c); 0 or -1. */
-int	 organs_apply(const struct scene *, struct result *);
 void	 scene_error(const struct scene *, int line, const char *fmt, ...)
 	    PRINTFLIKE(3, 4)
 	    ;

@@ -9,12 +9,12 @@
 #include <string.h>
 
 #include "scene/cfgtext.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "models/model.h"
 #include "scene/load.h"
 #include "scene/scene.h"
-#include "scene/settings.h"
+#include "base/table.h"
 #include "scene/suggest.h"
 
 static const char *

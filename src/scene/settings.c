@@ -3,13 +3,13 @@
  * entries of organs.  Each model's group is a table in the model's own
  * file, and a receptacle's in receptacle.c; settings_list() prints
  * them all for tests/man.sh, which checks phyllo-export(5) against it.
+ * What every table shares is base/table.c's.
  */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "diag.h"
 #include "models/model.h"
 #include "scene/scene.h"
 #include "scene/settings.h"
@@ -83,20 +83,6 @@ static const struct row scene_rows[] = {
 
 const struct table scene_table = TABLE(scene_rows, struct scene);
 
-static const char *const type_names[] = {
-	[T_GROUP] = "group", [T_INT] = "integer", [T_FLOAT] = "number",
-	[T_IDENT] = "identifier", [T_CHOICE] = "string",
-	[T_EXPR] = "expression", [T_NAMES] = "names", [T_WEIGHTS] = "numbers",
-	[T_INTS] = "integers", [T_POINTS] = "points", [T_RANGES] = "list",
-	[T_MODEL] = "string", [T_VEC3] = "numbers", [T_FILES] = "files"
-};
-
-const char *
-settings_type(const struct row *r)
-{
-	return type_names[r->type];
-}
-
 static void
 list_row(FILE *fp, const char *prefix, const struct row *r)
 {
@@ -104,31 +90,11 @@ list_row(FILE *fp, const char *prefix, const struct row *r)
 
 	snprintf(path, sizeof(path), "%s%s%s", prefix, *prefix ? "." : "",
 	    r->name);
-	fprintf(fp, "%s\t%s\t%s\n", path, type_names[r->type],
+	fprintf(fp, "%s\t%s\t%s\n", path, settings_type(r),
 	    r->defstr != NULL ? r->defstr : "");
 	if (r->sub != NULL)
 		for (size_t i = 0; i < r->sub->n; i++)
 			list_row(fp, path, &r->sub->rows[i]);
-}
-
-void
-settings_verror(const char *file, int line, const char *fmt, va_list ap)
-{
-	char msg[512];
-
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	diag(ST_SCENE, file, line > 0 ? line : 1, 0, "%s", msg);
-}
-
-int
-settings_given(const struct table *tab, const void *obj, const char *name)
-{
-	const int *given = (const int *)((const char *)obj + tab->given);
-
-	for (size_t i = 0; i < tab->n; i++)
-		if (strcmp(tab->rows[i].name, name) == 0)
-			return given[i];
-	return 0;
 }
 
 /* The top level, then each model's group, then the organs entries. */

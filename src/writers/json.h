@@ -2,7 +2,7 @@
 #ifndef JSON_H
 #define JSON_H
 
-#include "writers/sink.h"
+#include "base/sink.h"
 
 /*
  * s as a JSON string: quotes, backslashes and control characters

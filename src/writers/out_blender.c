@@ -10,9 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "diag.h"
+#include "base/diag.h"
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "writers/writer.h"
 
 /* Euler XYZ angles (Blender's default order) of the rotation [u v w]. */

@@ -14,8 +14,8 @@
 
 #include "scene/cfgtext.h"
 #include "scene/compound.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 #include "scene/override.h"
 #include "writers/writer.h"
 

@@ -98,7 +98,7 @@ csv_bytes(const struct result *r, unsigned opts)
 	sink_init_count(&s);
 	result_sample(L.objects, 64, sample_line, &L);
 	sink_free(&s);
-	result_free(&view);
+	flatten_free(&view);
 	return (double)(sizeof(header) - 1) +
 	    (L.weights > 0 ? L.bytes / L.weights * n : 0);
 }

@@ -26,7 +26,7 @@
 
 #include "result/flatten.h"
 #include "writers/json.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "meshes/mesh.h"
 #include "meshes/meshes.h"
 #include "writers/writer.h"
@@ -169,7 +169,7 @@ gltf_plan(struct gltf *G, const struct result *r)
 static void
 gltf_free(struct gltf *G)
 {
-	result_free(&G->view);
+	flatten_free(&G->view);
 	mesh_free(&G->placeholder);
 	free(G->node);
 	free(G->geom);

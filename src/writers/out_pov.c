@@ -9,7 +9,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "diag.h"
+#include "base/diag.h"
 #include "writers/povwords.h"
 #include "writers/writer.h"
 

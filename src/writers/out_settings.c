@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "scene/compound.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "writers/json.h"
 #include "models/model.h"
 #include "scene/settings.h"

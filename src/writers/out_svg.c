@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "analysis/parastichy.h"
 #include "analysis/unordered.h"
 #include "writers/unordered_out.h"

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 
 #include "analysis/unordered.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "writers/unordered_out.h"
 
 double

@@ -19,7 +19,7 @@
  * leaves a temporary file behind.
  *
  * -o never names a file the run reads: the scene, a part's scene, the
- * template (output_input() lists them), so that a slip of the keyboard
+ * template (base/inputs.c lists them), so that a slip of the keyboard
  * (phyllo-export --pov -o my.cfg my.cfg) cannot destroy a scene.  Nor
  * one the user may not write: a rename would replace a read-only file
  * that the shell's > and cp refuse to touch.  Nor, on Windows, a
@@ -33,8 +33,9 @@
 #include <string.h>
 
 #include "compat/compat.h"
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/inputs.h"
+#include "base/mem.h"
 #include "writers/output.h"
 
 /* A file written but not yet in place. */
@@ -42,15 +43,6 @@ struct pending {
 	char	 tmp[PATH_MAX];
 	char	*target;
 };
-
-/* A file read, by identity: another path or a link is the same file. */
-struct input {
-	struct sys_id	 id;
-	char		*path, *what;
-};
-
-static struct input *inputs;
-static size_t ninputs;
 
 static FILE *out;
 static const char *display = "<stdout>";	/* for messages */
@@ -86,37 +78,11 @@ catch_signals(void)
 		atexit(remove_tmps);
 }
 
-static void
-free_inputs(void)
-{
-	for (size_t i = 0; i < ninputs; i++) {
-		free(inputs[i].path);
-		free(inputs[i].what);
-	}
-	free(inputs);
-	inputs = NULL;
-	ninputs = 0;
-}
-
-void
-output_input(const char *path, const char *what)
-{
-	struct sys_stat st;
-
-	if (sys_stat(path, &st) != 0)
-		return;
-	if (inputs == NULL)
-		atexit(free_inputs);
-	inputs = xreallocarray(inputs, ninputs + 1, sizeof(*inputs));
-	inputs[ninputs++] = (struct input){ st.id, xstrdup(path),
-	    xstrdup(what) };
-}
-
 int
 output_check(const char *path)
 {
 	struct sys_stat st;
-	const char *why;
+	const char *why, *in, *what;
 
 	if (path != NULL && (why = sys_bad_name(path)) != NULL) {
 		diag(ST_USAGE, NULL, 0, 0, "-o %s: %s: give another name",
@@ -125,14 +91,13 @@ output_check(const char *path)
 	}
 	if (path == NULL || sys_stat(path, &st) != 0)
 		return 0;
-	for (size_t i = 0; i < ninputs; i++)
-		if (SYS_SAME(inputs[i].id, st.id)) {
-			diag(ST_USAGE, NULL, 0, 0, "-o %s would replace %s, %s%s: "
-			    "give another output file", path, inputs[i].path,
-			    inputs[i].what, strcmp(path, inputs[i].path) != 0 ?
-			    " (the same file by another name)" : "");
-			return -1;
-		}
+	if (input_find(&st.id, &in, &what)) {
+		diag(ST_USAGE, NULL, 0, 0, "-o %s would replace %s, %s%s: "
+		    "give another output file", path, in, what,
+		    strcmp(path, in) != 0 ?
+		    " (the same file by another name)" : "");
+		return -1;
+	}
 	if (st.kind == SYS_REG && !sys_writable(path)) {
 		diag(ST_SYSTEM, path, 0, 0, "%s: -o replaces only a file you may "
 		    "write", strerror(errno));

@@ -5,11 +5,9 @@
 #include <stdio.h>
 
 /*
- * A file the run reads (what: "the scene file", "the template"), which
- * -o must never name, by any path or link.  Remembered until exit.
+ * 0 if -o path names no input (base/inputs.h) and may be written; else
+ * -1 after a usage error.
  */
-void	 output_input(const char *path, const char *what);
-/* 0 if -o path names no input; else -1 after a usage error. */
 int	 output_check(const char *path);
 
 /*

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "writers/plan.h"
 
 static int
@@ -84,7 +84,7 @@ void
 plan_free(struct plan *P)
 {
 	for (size_t i = 0; i < P->nviews; i++)
-		result_free(&P->views[i]);
+		flatten_free(&P->views[i]);
 	free(P->views);
 	free(P->all);
 	*P = (struct plan){ NULL, 0, NULL, 0 };

@@ -34,12 +34,12 @@
 #include <string.h>
 
 #include "compat/compat.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "result/flatten.h"
-#include "mem.h"
-#include "phyllo.h"
+#include "base/inputs.h"
+#include "base/mem.h"
+#include "base/phyllo.h"
 #include "scene/suggest.h"
-#include "writers/output.h"
 #include "writers/template.h"
 
 
@@ -368,9 +368,9 @@ tmpl_shipped_inputs(void)
 		/* A program that travels (SHAREDIR empty) has none. */
 		if (SHAREDIR[0] != '\0') {
 			snprintf(path, sizeof(path), "%s/%s", SHAREDIR, b->name);
-			output_input(path, "a template phyllo-export installs");
+			input_add(path, "a template phyllo-export installs");
 		}
-		output_input(b->source, "a template phyllo-export is built "
+		input_add(b->source, "a template phyllo-export is built "
 		    "from");
 	}
 }

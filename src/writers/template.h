@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 #include "result/organ.h"
-#include "writers/sink.h"
+#include "base/sink.h"
 
 #define TMPL_BYTES_MAX	(1024 * 1024)
 
@@ -98,7 +98,7 @@ struct builtin_template {
 };
 extern const struct builtin_template builtin_templates[];
 /*
- * Tell output_input() the templates phyllo-export ships, installed in
+ * Tell input_add() the templates phyllo-export ships, installed in
  * SHAREDIR and the files the build embedded: -o replacing one would make
  * a user's output every later run's default.
  */

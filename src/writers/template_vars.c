@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "compat/compat.h"
-#include "phyllo.h"
+#include "base/phyllo.h"
 #include "result/flatten.h"
 #include "writers/template.h"
 

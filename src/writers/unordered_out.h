@@ -8,7 +8,7 @@
 
 #include <stddef.h>
 
-#include "writers/sink.h"
+#include "base/sink.h"
 #include "result/organ.h"
 
 /*

@@ -4,7 +4,7 @@
 
 #include "result/organ.h"
 #include "scene/scene.h"
-#include "writers/sink.h"
+#include "base/sink.h"
 #include "writers/template.h"
 
 /*

@@ -8,6 +8,7 @@
 #include <time.h>
 
 #include "models/model.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 #include "clock.h"
 

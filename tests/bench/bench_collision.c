@@ -13,6 +13,7 @@
 
 #include "models/collision.h"
 #include "models/model.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 #include "clock.h"
 

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "scene/expr.h"
+#include "base/expr.h"
 
 #define SRC "0.05 - 0.02 * t + sin(phi * pi / 180) * r ^ 2 / (1 + n)"
 

@@ -11,6 +11,7 @@
 
 #include "models/inhibition.h"
 #include "models/model.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 #include "clock.h"
 #include "dense.h"

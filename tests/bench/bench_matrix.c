@@ -22,6 +22,7 @@
 #include "clock.h"
 #include "models/collision.h"
 #include "models/model.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 
 /* The clock, or with BENCH_CPU=1 this process's CPU time so far. */

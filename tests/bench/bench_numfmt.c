@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "writers/numfmt.h"
+#include "base/numfmt.h"
 
 static double
 now(void)

@@ -12,8 +12,9 @@
 #include "clock.h"
 #include "models/model.h"
 #include "analysis/parastichy.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
-#include "writers/sink.h"
+#include "base/sink.h"
 #include "writers/writer.h"
 
 #define ROUNDS	3

@@ -19,15 +19,19 @@
 # and Xvfb -listen tcp, DISPLAY=127.0.0.1:7 (the chroot shares the
 # network, not /tmp's X socket).  README's picture: the sid root's
 # Blender 5.2 on the coneflower, cut to 1290 x 910, scaled to 1000 wide.
+import os
 import sys
 
 import bpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from install import install_addon  # noqa: E402 (after the path)
+
 zip_path, scene = sys.argv[sys.argv.index("--") + 1:][:2]
 
+# Installed by the first run, whose preferences the second loads.
 if not hasattr(bpy.types, "IMPORT_SCENE_OT_phyllotaxis"):
-    bpy.ops.extensions.package_install_files(
-        filepath=zip_path, repo="user_default", enable_on_install=True)
+    install_addon(zip_path)
 if bpy.app.background:
     # A first run, headless: the add-on installed and the preferences
     # saved, so that the window's run shows no first-start splash.

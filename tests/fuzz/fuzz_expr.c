@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/expr.h"
+#include "base/expr.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

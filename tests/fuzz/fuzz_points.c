@@ -14,7 +14,7 @@
 
 #include "analysis/axis.h"
 #include "analysis/unordered.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "models/measured_csv.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -19,6 +19,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "pipeline/pipeline.h"
 #include "scene/compound.h"
 #include "result/flatten.h"
 #include "models/model.h"
@@ -130,7 +131,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			tmpl_write(t, &s, all, 1, 0);
 			tmpl_free(t);
 		}
-		result_free(&merged);
+		flatten_free(&merged);
 	}
 	/* Each format's estimate, and the script in --frames' pieces. */
 	for (const struct writer *w = writers; w->name != NULL; w++) {

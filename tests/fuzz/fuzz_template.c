@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "models/model.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 #include "writers/template.h"
 #include "writers/writer.h"

@@ -5,7 +5,7 @@
 # only adds what a root made before the glTF tests lacks. Needs root and
 # debootstrap. DIR defaults to $PHYLLO_ROOTS/SUITE, and PHYLLO_ROOTS to
 # /var/cache/phyllo-export (outside the tree, so `make clean` keeps it).
-# Run Blender in it with tests/tools/blender-in-root.sh DIR.
+# Run its Blender with tests/tools/in-root.sh DIR blender ARGS.
 set -eu
 suite=${1:?usage: blender-root.sh SUITE [DIR]}
 dir=${2:-${PHYLLO_ROOTS:-/var/cache/phyllo-export}/$suite}

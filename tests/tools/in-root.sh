@@ -1,8 +1,9 @@
 #!/bin/sh
 # in-root.sh ROOT PROGRAM [ARGS...] - run a program of a Debian root made
-# by tests/tools/blender-root.sh (gltfpack, for one) on our files: the current
-# directory is bound at the same path inside ROOT, as
-# tests/tools/blender-in-root.sh does for Blender.  Needs root (chroot).
+# by tests/tools/blender-root.sh (blender, gltfpack) on our files: the
+# current directory is bound at the same path inside ROOT, so relative
+# and absolute paths under it mean the same file inside and out.  Needs
+# root (chroot).
 set -eu
 root=${1:?usage: in-root.sh ROOT PROGRAM [ARGS...]}
 prog=${2:?usage: in-root.sh ROOT PROGRAM [ARGS...]}

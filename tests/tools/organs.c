@@ -10,6 +10,7 @@
 #include <stdio.h>
 
 #include "result/organ.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 
 int

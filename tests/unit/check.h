@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "geometry/vec.h"
+#include "base/vec.h"
 #include "result/organ.h"
 
 static const char *check_topic = "";

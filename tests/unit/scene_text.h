@@ -8,6 +8,7 @@
 
 #include <string.h>
 
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 
 /* Load text and run its model; 0, or -1 after a diagnostic. */

@@ -22,6 +22,7 @@
 #include "models/collision.h"
 #include "models/model.h"
 #include "geometry/receptacle.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 #include "check.h"
 

@@ -13,7 +13,7 @@
 #include "scene/scene.h"
 #include "check.h"
 #include "scene_text.h"
-#include "geometry/vec.h"
+#include "base/vec.h"
 
 
 /* ABOP Table 4.1, the 15 rows with a diameter. */

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "scene/expr.h"
+#include "base/expr.h"
 #include "check.h"
 
 

@@ -18,6 +18,7 @@
 #include "models/inhibition.h"
 #include "models/model.h"
 #include "analysis/parastichy.h"
+#include "pipeline/pipeline.h"
 #include "scene/scene.h"
 #include "check.h"
 #include "dense.h"

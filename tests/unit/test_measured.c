@@ -13,8 +13,9 @@
 
 #include "analysis/parastichy.h"
 #include "analysis/unordered.h"
-#include "diag.h"
+#include "base/diag.h"
 #include "models/measured_csv.h"
+#include "pipeline/pipeline.h"
 #include "scene/compound.h"
 #include "scene/scene.h"
 #include "check.h"

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "writers/numfmt.h"
+#include "base/numfmt.h"
 #include "check.h"
 
 /* A deterministic stream of doubles for the formatter checks. */

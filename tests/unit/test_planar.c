@@ -12,7 +12,7 @@
 #include "scene/scene.h"
 #include "check.h"
 #include "scene_text.h"
-#include "geometry/vec.h"
+#include "base/vec.h"
 
 static double
 angle_diff(double a, double b)

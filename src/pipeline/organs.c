@@ -9,9 +9,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "diag.h"
-#include "mem.h"
-#include "scene/scene.h"
+#include "base/diag.h"
+#include "base/mem.h"
+#include "pipeline/pipeline.h"
 
 /* Keys the choice among variants apart from every rand(k) of the user. */
 #define VARIANT_SALT	0x76617269616e7473ull	/* "variants" */

@@ -1,9 +1,8 @@
-/* result.c - the organ array every model fills and every writer reads. */
+/* organ.c - the organ array every model fills and every writer reads. */
 #include <stdarg.h>
 #include <stdlib.h>
 
-#include "result/flatten.h"
-#include "mem.h"
+#include "base/mem.h"
 #include "result/organ.h"
 
 void
@@ -21,7 +20,6 @@ result_free(struct result *r)
 	free(r->source);
 	free(r->objects);
 	free(r->sub);
-	flat_free(r->flat);
 	free(r->unordered);
 	*r = (struct result){0};
 }

@@ -10,9 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mem.h"
-#include "writers/numfmt.h"
-#include "writers/sink.h"
+#include "base/mem.h"
+#include "base/numfmt.h"
+#include "base/sink.h"
 
 #define SINK_BLOCK (64 * 1024)
 

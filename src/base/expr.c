@@ -24,10 +24,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "diag.h"
-#include "scene/expr.h"
-#include "phyllo.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/expr.h"
+#include "base/phyllo.h"
+#include "base/mem.h"
 
 
 enum op {

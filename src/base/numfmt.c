@@ -17,7 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "writers/numfmt.h"
+#include "base/numfmt.h"
 
 static const double p10[] = {
 	1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,

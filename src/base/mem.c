@@ -9,8 +9,8 @@
 #include <sys/mman.h>
 #endif
 
-#include "diag.h"
-#include "mem.h"
+#include "base/diag.h"
+#include "base/mem.h"
 
 /*
  * Nothing useful can be written once memory is gone, and every caller

@@ -2,7 +2,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-#include "diag.h"
+#include "base/diag.h"
 
 const char *diag_progname = "phyllo-export";
 static enum status worst = ST_OK;
