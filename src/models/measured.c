@@ -359,7 +359,7 @@ static int
 older_out(const struct points *P, const size_t *row,
     const struct axis_point *ap)
 {
-	double sn = 0, ss = 0, snn = 0, sns = 0, k = (double)P->count;
+	double sn = 0, ss = 0, sns = 0, k = (double)P->count;
 
 	if (P->n == NULL)
 		return 0;
@@ -368,10 +368,9 @@ older_out(const struct points *P, const size_t *row,
 
 		sn += n;
 		ss += ap[i].s;
-		snn += n * n;
 		sns += n * ap[i].s;
 	}
-	/* n falling as s rises: counted from the far end. */
+	/* n falling as s rises (their covariance's sign): from the far end. */
 	return k * sns - sn * ss < 0;
 }
 

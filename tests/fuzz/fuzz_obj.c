@@ -51,7 +51,7 @@ check_gltf(const struct mesh *m)
 	char name[1][NAME_LEN + 1] = { "Organ" };
 	struct organ o[3];
 	struct object_mesh om = { "Organ", m };
-	struct meshes M = { &om, 1 };
+	struct meshes M = { &om, 1, 0 };
 	struct result r = {0};
 	struct sink s;
 	uint32_t len;
