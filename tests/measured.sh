@@ -220,6 +220,13 @@ try "a head cut at 0.7 of its radius: no warning, the rim's pair" px --info "$OU
 assert "nothing on stderr" '[ ! -s $OUT/stderr ]'
 assert "55 89" 'grep -q "^parastichies: 55 89$" $OUT/stdout'
 end
+# A small head, whole: no side is short (eight points a side at least).
+printf 'model = "planar";\ncount = 31;\n' >"$OUT/small.cfg"
+px --csv "$OUT/small.cfg" | awk -F, 'NR == 1 { print "x,y"; next } NR > 2 { print $3 "," $4 }' >"$OUT/small.csv"
+measure "$OUT/small-m.cfg" small.csv
+try "a whole head of 30 organs: no warning of a cut" px --info "$OUT/small-m.cfg"
+assert "exit 0, nothing on stderr" '[ $rc -eq 0 ] && [ ! -s $OUT/stderr ]'
+end
 # A centre given outside the head: said, and nothing measured.
 measure "$OUT/outside-m.cfg" plain.csv 'centre = [5.0, 5.0, 0.0];'
 try "a centre given outside the head: a warning; divergence none, not 0" px --info "$OUT/outside-m.cfg"

@@ -231,10 +231,14 @@ spacing(const struct points *P, const double (*p)[3], const char *path,
  * too little of a ring to read (the trials hold at 0.7 of the radius;
  * cuts nearer than a fifth gave divergences far off, with small
  * errors).  Under REACH_LOW, a warning: the centre may be off; or, given,
- * not the head's.
+ * not the head's.  Fewer directions on a small head, eight points a
+ * direction at least: else some would hold none, cut or not; and none
+ * under REACH_MIN points, too few to read (and a few clicks of Vogel's
+ * spiral are lopsided).
  */
 #define SECTORS		24
 #define REACH_LOW	0.5
+#define REACH_MIN	60
 
 static int
 cmp_double(const void *a, const void *b)
@@ -247,21 +251,21 @@ cmp_double(const void *a, const void *b)
 static void
 reach(const struct axis_point *ap, size_t n, const char *path, int given)
 {
-	double far[SECTORS] = { 0 }, sorted[SECTORS], lo, hi;
+	double far[SECTORS] = { 0 }, lo, hi;
+	int sectors = n / 8 < 4 ? 4 : n / 8 > SECTORS ? SECTORS : (int)(n / 8);
 
 	for (size_t i = 0; i < n; i++) {
 		double a = atan2(ap[i].p[1], ap[i].p[0]) / (2 * M_PI) + 0.5;
-		int k = (int)(a * SECTORS) % SECTORS;
+		int k = (int)(a * sectors) % sectors;
 
 		far[k] = fmax(far[k], ap[i].rho);
 	}
 	/* Of the median side's: a stray click makes no side long. */
-	memcpy(sorted, far, sizeof(far));
-	qsort(sorted, SECTORS, sizeof(*sorted), cmp_double);
-	lo = sorted[0];
-	hi = sorted[SECTORS / 2];
+	qsort(far, (size_t)sectors, sizeof(*far), cmp_double);
+	lo = far[0];
+	hi = far[sectors / 2];
 	/* hi 0: no points at all on half the sides, a centre outside. */
-	if (n == 0 || (hi > 0 && lo >= REACH_LOW * hi))
+	if (n < REACH_MIN || (hi > 0 && lo >= REACH_LOW * hi))
 		return;
 	if (given)
 		diag(ST_OK, path, 0, 0, "about measured.centre the points "
