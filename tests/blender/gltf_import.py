@@ -10,17 +10,13 @@
 # Prints "check: ok ..." / "check: FAILED ..." lines; exits 1 on a failure.
 import csv
 import math
+import os
 import sys
 
 import bpy
 
-failures = []
-
-
-def check(ok, what):
-    print("check: %s %s" % ("ok" if ok else "FAILED", what))
-    if not ok:
-        failures.append(what)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, done  # noqa: E402
 
 
 def obj_tips(path):
@@ -113,5 +109,4 @@ for a in args:
 groups.append(cur)
 for g in groups:
     one(g[0], g[1], dict(m.split("=", 1) for m in g[2:]))
-if failures:
-    raise SystemExit("check: %d failed" % len(failures))
+done()

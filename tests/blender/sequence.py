@@ -14,15 +14,9 @@ import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import state  # noqa: E402 (after the path)
+from checks import check, done  # noqa: E402
 
 scripts = sys.argv[sys.argv.index("--") + 1:]
-failures = []
-
-
-def check(ok, what):
-    print("check: %s %s" % ("ok" if ok else "FAILED", what))
-    if not ok:
-        failures.append(what)
 
 
 start = state.snapshot()
@@ -38,5 +32,4 @@ for i, script in enumerate(scripts):
         check(not diff, "%s: the .blend as its last run left it (%s)"
               % (what, diff))
     after[script] = now
-if failures:
-    raise SystemExit("check: %d failed" % len(failures))
+done()
